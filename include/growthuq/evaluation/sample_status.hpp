@@ -1,0 +1,28 @@
+// Why a sample has no value. Every evaluator writes a status per sample instead of throwing or
+// leaving a silent NaN; the first non-ok status a sample gets is the one it keeps.
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+namespace growthuq {
+
+enum class SampleStatus : std::uint8_t {
+  ok = 0,
+  invalid_input = 1,          // an input is NaN, infinite, or outside its physical domain (e.g. h <= 0)
+  lambda_not_above_one = 2,   // d <= d0: no stretch, the hoop relation gives no modulus
+  beyond_membrane_limit = 3,  // q = (1 - nu^2) ln(lambda) >= 1: alpha and p are not finite
+  burst = 4,                  // forward model: c d0 > 1/e, the wall cannot hold the pressure
+  no_growth = 5,              // p <= p0: below the yield pressure the tube does not grow
+  fit_failed = 6,             // a relaxation fit did not converge or was ill-conditioned
+  stiffness_at_sensor_limit = 7,  // measured k >= sensor stiffness: the series correction diverges
+  out_of_range = 8,           // a result overflows or underflows double precision
+};
+
+// Short name used in CSV/HDF5 ("ok", "lambda_not_above_one", ...).
+std::string_view to_string(SampleStatus status);
+
+// One sentence for users (README table, summaries).
+std::string_view describe(SampleStatus status);
+
+}  // namespace growthuq

@@ -1,0 +1,62 @@
+// growthuq: the command-line front end. It only dispatches to a subcommand and turns
+// errors into one line on stderr and a non-zero exit.
+#include <array>
+#include <exception>
+#include <iostream>
+#include <string>
+
+#include "commands.hpp"
+#include "growthuq/core/error.hpp"
+
+namespace {
+
+using growthuq::cli::Command;
+
+constexpr std::array commands{
+    Command{"sample", "correlated Latin hypercube design of a plant line", growthuq::cli::run_sample},
+    Command{"fit", "fit distribution families to raw per-tube measurements", growthuq::cli::run_fit},
+    Command{"eval", "invert measured tubes to turgor, modulus and more (no Monte Carlo)", growthuq::cli::run_eval},
+    Command{"correlate", "rank correlation of (k, h, d, d0) from the forward mechanics", growthuq::cli::run_correlate},
+    Command{"relax", "fit generalized Maxwell series to force-relaxation curves", growthuq::cli::run_relax},
+};
+
+void print_usage(std::ostream& out) {
+  out << "usage: growthuq <command> [options]   (growthuq <command> --help for its options)\n\n"
+         "Monte Carlo uncertainty quantification of pollen tube mechanics and growth.\n\ncommands:\n";
+  for (const Command& command : commands) {
+    out << "  " << command.name << std::string(12 - command.name.size(), ' ') << command.summary << "\n";
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    print_usage(std::cerr);
+    return 2;
+  }
+  const std::string name = argv[1];
+  if (name == "--help" || name == "-h" || name == "help") {
+    print_usage(std::cout);
+    return 0;
+  }
+  if (name == "--version") {
+    std::cout << "growthuq " << GROWTHUQ_VERSION << "\n";
+    return 0;
+  }
+  for (const Command& command : commands) {
+    if (command.name != name) continue;
+    try {
+      return command.run(growthuq::cli::Arguments(argv + 2, argv + argc));
+    } catch (const growthuq::InputError& error) {
+      std::cerr << "growthuq " << name << ": error: " << error.what() << "\n";
+      return 2;
+    } catch (const std::exception& error) {
+      std::cerr << "growthuq " << name << ": internal error: " << error.what() << "\n";
+      return 3;
+    }
+  }
+  std::cerr << "growthuq: unknown command '" << name << "'\n\n";
+  print_usage(std::cerr);
+  return 2;
+}

@@ -1,0 +1,22 @@
+#include "growthuq/core/error.hpp"
+
+namespace growthuq {
+
+InputError::InputError(std::string location, std::string problem)
+    : std::runtime_error(location.empty() ? problem : location + ": " + problem),
+      location_(std::move(location)),
+      problem_(std::move(problem)) {}
+
+void throw_bad_value(std::string_view location, std::string_view key, std::string_view value,
+                     std::string_view expected) {
+  throw InputError(std::string(location), std::string(key) + " = '" + std::string(value) +
+                                              "': expected " + std::string(expected));
+}
+
+std::string file_location(std::string_view file, long line) {
+  std::string location(file);
+  if (line > 0) location += ":" + std::to_string(line);
+  return location;
+}
+
+}  // namespace growthuq

@@ -1,0 +1,131 @@
+#include "growthuq/io/csv.hpp"
+
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+#include "read_text_file.hpp"
+
+namespace growthuq {
+namespace {
+
+// Splits one CSV line into trimmed cells, honouring double quotes ("" is a literal quote).
+std::vector<std::string> split_cells(std::string_view line, const std::string& location) {
+  std::vector<std::string> cells;
+  std::string cell;
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        cell += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        cell += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      cells.emplace_back(trim(cell));
+      cell.clear();
+    } else {
+      cell += c;
+    }
+  }
+  if (quoted) throw InputError(location, "a quoted cell is not closed on this line");
+  cells.emplace_back(trim(cell));
+  return cells;
+}
+
+}  // namespace
+
+std::size_t CsvTable::column_index(std::string_view name) const {
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    if (header[i] == name) return i;
+  }
+  std::string columns;
+  for (const auto& column : header) columns += (columns.empty() ? "" : ", ") + column;
+  throw InputError(path, "no column '" + std::string(name) + "' (the columns are: " + columns + ")");
+}
+
+bool CsvTable::has_column(std::string_view name) const {
+  for (const auto& column : header) {
+    if (column == name) return true;
+  }
+  return false;
+}
+
+std::string CsvTable::row_location(std::size_t row) const {
+  return file_location(path, line_numbers.at(row));
+}
+
+std::vector<double> CsvTable::numeric_column(std::string_view name) const {
+  const std::size_t column = column_index(name);
+  std::vector<double> values;
+  values.reserve(rows.size());
+  for (std::size_t row = 0; row < rows.size(); ++row) {
+    values.push_back(parse_double(rows[row][column], row_location(row), "column " + std::string(name)));
+  }
+  return values;
+}
+
+CsvTable read_csv(const std::string& path) {
+  const std::string text = detail::read_text_file(path);
+  CsvTable table;
+  table.path = path;
+  long line_number = 0;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    const std::string_view line = trim(std::string_view(text).substr(start, end - start));
+    start = end + 1;
+    ++line_number;
+    if (line.empty() || line.front() == '#') continue;
+    const std::string location = file_location(path, line_number);
+    auto cells = split_cells(line, location);
+    if (table.header.empty()) {
+      for (std::size_t i = 0; i < cells.size(); ++i) {
+        if (cells[i].empty()) throw InputError(location, "header column " + std::to_string(i + 1) + " has no name");
+        for (std::size_t j = 0; j < i; ++j) {
+          if (cells[j] == cells[i]) throw InputError(location, "header repeats column '" + cells[i] + "'");
+        }
+      }
+      table.header = std::move(cells);
+      continue;
+    }
+    if (cells.size() != table.header.size()) {
+      throw InputError(location, "row has " + std::to_string(cells.size()) + " cells: expected " +
+                                     std::to_string(table.header.size()) + " like the header");
+    }
+    table.rows.push_back(std::move(cells));
+    table.line_numbers.push_back(line_number);
+  }
+  if (table.header.empty()) throw InputError(path, "empty file: expected a header row of column names");
+  return table;
+}
+
+std::string csv_cell(std::string_view text) {
+  if (text.find_first_of(",\"\n\r") == std::string_view::npos) return std::string(text);
+  std::string quoted = "\"";
+  for (const char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+CsvWriter::CsvWriter(const std::vector<std::string>& header) : width_(header.size()) { add_row(header); }
+
+void CsvWriter::add_row(const std::vector<std::string>& cells) {
+  if (cells.size() != width_) {
+    throw std::logic_error("CsvWriter: row of " + std::to_string(cells.size()) + " cells for " +
+                           std::to_string(width_) + " columns");
+  }
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (i > 0) text_ += ',';
+    text_ += csv_cell(cells[i]);
+  }
+  text_ += '\n';
+}
+
+}  // namespace growthuq
