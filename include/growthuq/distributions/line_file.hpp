@@ -1,0 +1,40 @@
+// A plant line's distribution file (distributions/<line>.ini): one section per measured
+// variable with its law, parameters, unit and source. The format is documented in the README
+// and validated strictly; every error names the file and line.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "growthuq/core/units.hpp"
+#include "growthuq/distributions/distribution.hpp"
+
+namespace growthuq {
+
+struct LineVariable {
+  std::string name;           // quantity name: k, h, d, d0, tau, einf, v_exp
+  const Unit* unit = nullptr; // the unit the distribution's values are in (as written in the file)
+  Distribution distribution;  // in `unit`, not SI
+  std::string source;         // citation, or "illustrative"
+  std::string note;           // required when source = illustrative: why this value
+  long line = 0;              // line of the section header, for messages
+};
+
+struct LineDistributions {
+  std::string name;         // [line] name = ...
+  std::string description;  // [line] description = ... (optional)
+  std::string path;         // file it was read from
+  std::vector<LineVariable> variables;  // in file order
+
+  // The variable `name`, or nullptr.
+  const LineVariable* find(std::string_view name) const;
+};
+
+// Reads and validates a line file; InputError naming file and line on any problem.
+LineDistributions read_line_file(const std::string& path);
+
+// The INI text of one variable section, as `growthuq fit --write` appends it.
+std::string format_line_variable(const LineVariable& variable);
+
+}  // namespace growthuq
