@@ -1,0 +1,79 @@
+// Where evaluation runs, behind one small interface (the "batch evaluator" idea of pagmo2):
+// a Pool cuts a task of `count` items into fixed chunks, has workers compute them, and hands
+// every finished chunk to a sink on the coordinating process. Numerical code sees only this
+// header; MPI lives in src/pool/mpi_pool.cpp alone.
+//
+// Results do not depend on the number of processes: chunk boundaries depend only on `count`
+// and `chunk_size`, and a chunk's content only on its range (the work function must be a pure
+// function of [begin, end)). Chunks reach the sink in any order; the sink places them.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace growthuq {
+
+// A half-open range of items [begin, end).
+struct ChunkRange {
+  std::size_t begin = 0;
+  std::size_t end = 0;
+};
+
+// Computes the items of `range` and returns them serialized as doubles (the work function
+// decides the layout; the sink reads it back). May throw: the pool stops the whole run and
+// reports the rank, the range and the reason.
+using ChunkWork = std::function<std::vector<double>(ChunkRange range)>;
+
+// Receives a finished chunk on the coordinating process (rank 0).
+using ChunkSink = std::function<void(ChunkRange range, std::span<const double> values)>;
+
+// Thrown on every process when a chunk failed somewhere; what() names rank, range and reason.
+class PoolError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Pool {
+ public:
+  virtual ~Pool() = default;
+
+  // This process's number (0 coordinates) and the number of processes.
+  virtual int rank() const = 0;
+  virtual int size() const = 0;
+  bool is_coordinator() const { return rank() == 0; }
+
+  // Runs `work` over [0, count) in chunks of `chunk_size`, handed out dynamically so that
+  // slow chunks balance; `skip(range)` (optional) tells chunks already done (resume). Every
+  // process must call run() with the same count, chunk_size and skip; `sink` is called only
+  // on rank 0. Returns when every chunk has been sunk; throws PoolError if a chunk failed.
+  virtual void run(std::size_t count, std::size_t chunk_size, const ChunkWork& work,
+                   const ChunkSink& sink,
+                   const std::function<bool(ChunkRange)>& skip = nullptr) = 0;
+
+  // Sends `text` from rank 0 to every process (campaign text, so all ranks validate the same
+  // input); returns it on every rank.
+  virtual std::string broadcast(const std::string& text) = 0;
+};
+
+// The chunks of [0, count), in order; the last may be shorter. chunk_size 0 is treated as 1.
+std::vector<ChunkRange> split_into_chunks(std::size_t count, std::size_t chunk_size);
+
+// A pool of one process that runs chunks in order.
+std::unique_ptr<Pool> make_serial_pool();
+
+// True when this process was started by mpirun/mpiexec (Open MPI or PMIx environment).
+bool launched_by_mpi();
+
+// The MPI pool over MPI_COMM_WORLD; initializes MPI on first use and finalizes it at exit.
+// Only call when launched_by_mpi().
+std::unique_ptr<Pool> make_mpi_pool();
+
+// The MPI pool when launched by mpirun, else the serial pool.
+std::unique_ptr<Pool> make_pool();
+
+}  // namespace growthuq

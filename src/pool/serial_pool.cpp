@@ -1,0 +1,54 @@
+// The pool of one process, and the chunking and launcher detection shared by both pools.
+#include <cstdlib>
+
+#include "growthuq/pool/pool.hpp"
+
+namespace growthuq {
+
+std::vector<ChunkRange> split_into_chunks(std::size_t count, std::size_t chunk_size) {
+  if (chunk_size == 0) chunk_size = 1;
+  std::vector<ChunkRange> chunks;
+  chunks.reserve((count + chunk_size - 1) / chunk_size);
+  for (std::size_t begin = 0; begin < count; begin += chunk_size) {
+    chunks.push_back({begin, std::min(count, begin + chunk_size)});
+  }
+  return chunks;
+}
+
+namespace {
+
+class SerialPool final : public Pool {
+ public:
+  int rank() const override { return 0; }
+  int size() const override { return 1; }
+
+  void run(std::size_t count, std::size_t chunk_size, const ChunkWork& work, const ChunkSink& sink,
+           const std::function<bool(ChunkRange)>& skip) override {
+    for (const ChunkRange range : split_into_chunks(count, chunk_size)) {
+      if (skip && skip(range)) continue;
+      std::vector<double> values;
+      try {
+        values = work(range);
+      } catch (const std::exception& error) {
+        throw PoolError("rank 0 failed on items [" + std::to_string(range.begin) + ", " +
+                        std::to_string(range.end) + "): " + error.what());
+      }
+      sink(range, values);
+    }
+  }
+
+  std::string broadcast(const std::string& text) override { return text; }
+};
+
+}  // namespace
+
+std::unique_ptr<Pool> make_serial_pool() { return std::make_unique<SerialPool>(); }
+
+bool launched_by_mpi() {
+  // Open MPI's mpirun sets OMPI_COMM_WORLD_SIZE; PMIx-based launchers set PMIX_RANK.
+  return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr || std::getenv("PMIX_RANK") != nullptr;
+}
+
+std::unique_ptr<Pool> make_pool() { return launched_by_mpi() ? make_mpi_pool() : make_serial_pool(); }
+
+}  // namespace growthuq
