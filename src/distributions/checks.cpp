@@ -1,0 +1,35 @@
+#include "distributions/checks.hpp"
+
+#include <gsl/gsl_errno.h>
+
+#include <cmath>
+#include <string>
+
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+
+namespace growthuq::detail {
+
+void gsl_errors_return() {
+  static const bool switched_off = [] {
+    gsl_set_error_handler_off();
+    return true;
+  }();
+  (void)switched_off;
+}
+
+void require_finite(std::string_view family, std::string_view key, double value) {
+  if (!std::isfinite(value)) throw_bad_value(family, key, format_double(value), "a finite number");
+}
+
+void require_positive(std::string_view family, std::string_view key, double value) {
+  if (!(std::isfinite(value) && value > 0.0)) {
+    throw_bad_value(family, key, format_double(value), "a positive finite number");
+  }
+}
+
+void throw_bad_probability(std::string_view family, double u) {
+  throw_bad_value(std::string(family) + " quantile", "u", format_double(u), "a probability in [0, 1]");
+}
+
+}  // namespace growthuq::detail

@@ -1,0 +1,285 @@
+// Reading and writing plant-line distribution files (format in line_file.hpp and the README).
+// Validation is strict because these files are typed by hand: every key must belong to the
+// section's law, every parameter is checked at its own line, and errors name file and line.
+#include "growthuq/distributions/line_file.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+#include "growthuq/io/ini.hpp"
+
+namespace growthuq {
+namespace {
+
+constexpr std::array<std::string_view, 7> measured_variables{"k", "h", "d", "d0", "tau", "einf", "v_exp"};
+constexpr std::array<std::string_view, 4> common_keys{"law", "unit", "source", "note"};
+
+enum class Check { finite, positive, bound };
+
+struct Parameter {
+  std::string_view key;
+  Check check;
+};
+
+struct Law {
+  std::string_view name;
+  std::vector<std::vector<Parameter>> alternatives;  // accepted parameter sets
+  std::string_view keys_text;                         // for messages
+};
+
+const std::vector<Law>& laws() {
+  static const std::vector<Law> table{
+      {"lognormal",
+       {{{"median", Check::positive}, {"iqr", Check::positive}},
+        {{"mu", Check::finite}, {"sigma", Check::positive}}},
+       "median and iqr, or mu and sigma"},
+      {"normal", {{{"mean", Check::finite}, {"sd", Check::positive}}}, "mean, sd"},
+      {"truncated_normal",
+       {{{"mean", Check::finite}, {"sd", Check::positive}, {"lower", Check::bound}, {"upper", Check::bound}}},
+       "mean, sd, lower, upper"},
+      {"uniform", {{{"lower", Check::finite}, {"upper", Check::finite}}}, "lower, upper"},
+      {"gamma", {{{"shape", Check::positive}, {"scale", Check::positive}}}, "shape, scale"},
+      {"weibull", {{{"shape", Check::positive}, {"scale", Check::positive}}}, "shape, scale"},
+      {"empirical", {{{"values", Check::finite}}}, "values"},
+  };
+  return table;
+}
+
+template <class Range>
+std::string joined(const Range& names) {
+  std::string text;
+  for (const auto& name : names) text += (text.empty() ? "" : ", ") + std::string(name);
+  return text;
+}
+
+bool is_parameter_of_any_law(std::string_view key) {
+  for (const Law& law : laws()) {
+    for (const auto& set : law.alternatives) {
+      for (const Parameter& p : set) {
+        if (p.key == key) return true;
+      }
+    }
+  }
+  return false;
+}
+
+double parameter_value(const IniDocument& document, const IniEntry& entry, Check check) {
+  const std::string location = document.location(entry.line);
+  if (check == Check::bound) {
+    if (entry.value == "inf" || entry.value == "+inf") return HUGE_VAL;
+    if (entry.value == "-inf") return -HUGE_VAL;
+  }
+  const double value = parse_double(entry.value, location, entry.key);
+  if (check == Check::positive && !(value > 0.0)) {
+    throw_bad_value(location, entry.key, entry.value, "a positive number");
+  }
+  return value;
+}
+
+std::vector<double> parse_values(const IniDocument& document, const IniEntry& entry) {
+  std::vector<double> values;
+  std::string_view rest = entry.value;
+  while (true) {
+    const std::size_t comma = rest.find(',');
+    values.push_back(parse_double(rest.substr(0, comma), document.location(entry.line), entry.key));
+    if (comma == std::string_view::npos) break;
+    rest.remove_prefix(comma + 1);
+  }
+  return values;
+}
+
+Distribution make_distribution(const IniDocument& document, const IniSection& section, const Law& law,
+                               const IniEntry& law_entry) {
+  // The parameter set whose first key is present (lognormal has two).
+  const std::vector<Parameter>* chosen = nullptr;
+  for (const auto& set : law.alternatives) {
+    if (!chosen && section.find(set.front().key)) chosen = &set;
+  }
+  if (!chosen) chosen = &law.alternatives.front();
+  for (const IniEntry& entry : section.entries) {
+    const bool common = std::find(common_keys.begin(), common_keys.end(), entry.key) != common_keys.end();
+    const bool in_set = std::any_of(chosen->begin(), chosen->end(), [&](const Parameter& p) { return p.key == entry.key; });
+    if (common || in_set) continue;
+    const std::string location = document.location(entry.line);
+    if (is_parameter_of_any_law(entry.key)) {
+      throw InputError(location, "key '" + entry.key + "' is not a parameter of law = " + std::string(law.name) +
+                                     " (line " + std::to_string(law_entry.line) + "): expected " +
+                                     std::string(law.keys_text));
+    }
+    throw InputError(location, "unknown key '" + entry.key + "': expected law, unit, source, note or " +
+                                   std::string(law.keys_text));
+  }
+  std::vector<double> values;
+  for (const Parameter& p : *chosen) {
+    const IniEntry* entry = section.find(p.key);
+    if (!entry) {
+      throw InputError(document.location(section.line),
+                       "[" + section.name + "] law = " + std::string(law.name) + " needs '" + std::string(p.key) +
+                           "' (parameters: " + std::string(law.keys_text) + ")");
+    }
+    if (law.name == "empirical") {
+      try {
+        return Empirical(parse_values(document, *entry));
+      } catch (const InputError& error) {
+        if (error.location() == "empirical") throw InputError(document.location(entry->line), error.problem());
+        throw;
+      }
+    }
+    values.push_back(parameter_value(document, *entry, p.check));
+  }
+  // Relations between parameters (upper > lower, truncation mass) are checked by the
+  // constructors; their message is reported at the section's line.
+  try {
+    if (law.name == "lognormal") {
+      return chosen == &law.alternatives.front() ? Lognormal::from_median_iqr(values[0], values[1])
+                                                 : Lognormal(values[0], values[1]);
+    }
+    if (law.name == "normal") return Normal(values[0], values[1]);
+    if (law.name == "truncated_normal") return TruncatedNormal(values[0], values[1], values[2], values[3]);
+    if (law.name == "uniform") return Uniform(values[0], values[1]);
+    if (law.name == "gamma") return Gamma(values[0], values[1]);
+    return Weibull(values[0], values[1]);
+  } catch (const InputError& error) {
+    throw InputError(document.location(section.line), "[" + section.name + "] " + error.what());
+  }
+}
+
+const IniEntry& required(const IniDocument& document, const IniSection& section, std::string_view key,
+                         std::string_view what) {
+  const IniEntry* entry = section.find(key);
+  if (!entry || entry->value.empty()) {
+    throw InputError(document.location(section.line),
+                     "[" + section.name + "] has no '" + std::string(key) + "': expected " + std::string(what));
+  }
+  return *entry;
+}
+
+LineVariable read_variable(const IniDocument& document, const IniSection& section) {
+  const std::string section_location = document.location(section.line);
+  if (std::find(measured_variables.begin(), measured_variables.end(), section.name) == measured_variables.end()) {
+    throw InputError(section_location, "unknown variable [" + section.name +
+                                           "]: expected [line] or one of the measured variables " +
+                                           joined(measured_variables));
+  }
+  const Quantity& quantity = *find_quantity(section.name);
+
+  const IniEntry& law_entry = required(document, section, "law", "law = " + joined(std::vector<std::string_view>{
+      "lognormal", "normal", "truncated_normal", "uniform", "gamma", "weibull", "empirical"}));
+  const auto law = std::find_if(laws().begin(), laws().end(), [&](const Law& l) { return l.name == law_entry.value; });
+  if (law == laws().end()) {
+    std::vector<std::string_view> names;
+    for (const Law& l : laws()) names.push_back(l.name);
+    throw_bad_value(document.location(law_entry.line), "law", law_entry.value, "one of " + joined(names));
+  }
+
+  const IniEntry& unit_entry = required(document, section, "unit", "the unit of the values, e.g. unit = " +
+                                                                        std::string(quantity.default_unit));
+  const Unit& unit = find_unit(unit_entry.value, document.location(unit_entry.line), "unit");
+  if (unit.dimension != quantity.dimension) {
+    std::vector<std::string_view> fitting;
+    for (const Unit& u : known_units()) {
+      if (u.dimension == quantity.dimension) fitting.push_back(u.symbol);
+    }
+    throw_bad_value(document.location(unit_entry.line), "unit", unit_entry.value,
+                    "a unit of " + std::string(to_string(quantity.dimension)) + " for " + section.name + " (" +
+                        joined(fitting) + ")");
+  }
+
+  const std::string source =
+      required(document, section, "source", "source = <citation>, or source = illustrative with a note").value;
+  const IniEntry* note = section.find("note");
+  if (source == "illustrative" && (!note || note->value.empty())) {
+    throw InputError(section_location, "[" + section.name +
+                                           "] source = illustrative needs a one-line 'note' saying why the value was chosen");
+  }
+  return LineVariable{section.name, &unit, make_distribution(document, section, *law, law_entry), source,
+                      note ? note->value : std::string(), section.line};
+}
+
+}  // namespace
+
+const LineVariable* LineDistributions::find(std::string_view variable_name) const {
+  for (const LineVariable& variable : variables) {
+    if (variable.name == variable_name) return &variable;
+  }
+  return nullptr;
+}
+
+LineDistributions read_line_file(const std::string& path) {
+  const IniDocument document = read_ini(path);
+  LineDistributions line;
+  line.path = path;
+  const IniSection* header = nullptr;
+  for (const IniSection& section : document.sections) {
+    if (section.name.empty()) {
+      const IniEntry& first = section.entries.front();
+      throw InputError(document.location(first.line),
+                       "'" + first.key + " = " + first.value + "' comes before any [section]: expected [line] first");
+    }
+    if (section.name == "line") {
+      header = &section;
+      for (const IniEntry& entry : section.entries) {
+        if (entry.key != "name" && entry.key != "description") {
+          throw InputError(document.location(entry.line),
+                           "unknown key '" + entry.key + "' in [line]: expected name or description");
+        }
+      }
+      continue;
+    }
+    line.variables.push_back(read_variable(document, section));
+  }
+  if (!header) throw InputError(path, "no [line] section: expected [line] with name = <plant line>");
+  line.name = required(document, *header, "name", "name = <plant line>").value;
+  if (const IniEntry* description = header->find("description")) line.description = description->value;
+  if (line.variables.empty()) {
+    throw InputError(path, "no variable sections: expected at least one of " + joined(measured_variables));
+  }
+  return line;
+}
+
+std::string format_line_variable(const LineVariable& variable) {
+  std::string text = "[" + variable.name + "]\nlaw = " + std::string(family_name(variable.distribution)) + "\n";
+  const auto entry = [&text](std::string_view key, double value) {
+    text += std::string(key) + " = " + format_double(value) + "\n";
+  };
+  std::visit(
+      [&](const auto& d) {
+        using T = std::decay_t<decltype(d)>;
+        if constexpr (std::is_same_v<T, Lognormal>) {
+          // mu and sigma round-trip exactly; median and IQR are what readers compare.
+          text += "# median = " + format_double(d.median()) + ", iqr = " + format_double(d.iqr()) + "\n";
+          entry("mu", d.mu());
+          entry("sigma", d.sigma());
+        } else if constexpr (std::is_same_v<T, Normal>) {
+          entry("mean", d.mean());
+          entry("sd", d.sd());
+        } else if constexpr (std::is_same_v<T, TruncatedNormal>) {
+          entry("mean", d.mean());
+          entry("sd", d.sd());
+          entry("lower", d.lower());
+          entry("upper", d.upper());
+        } else if constexpr (std::is_same_v<T, Uniform>) {
+          entry("lower", d.lower());
+          entry("upper", d.upper());
+        } else if constexpr (std::is_same_v<T, Gamma> || std::is_same_v<T, Weibull>) {
+          entry("shape", d.shape());
+          entry("scale", d.scale());
+        } else {
+          std::string values;
+          for (const double v : d.sorted_data()) values += (values.empty() ? "" : ", ") + format_double(v);
+          text += "values = " + values + "\n";
+        }
+      },
+      variable.distribution);
+  text += "unit = " + std::string(variable.unit ? variable.unit->symbol : "1") + "\n";
+  text += "source = " + variable.source + "\n";
+  if (!variable.note.empty()) text += "note = " + variable.note + "\n";
+  return text;
+}
+
+}  // namespace growthuq

@@ -1,0 +1,153 @@
+// Line files: the five shipped files parse and reproduce the published table (PHYSICS.md
+// section 7); every kind of mistake is one InputError naming file and line.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "growthuq/core/error.hpp"
+#include "growthuq/distributions/line_file.hpp"
+
+using namespace growthuq;
+
+namespace {
+
+std::string shipped(const std::string& stem) { return std::string(GROWTHUQ_SOURCE_DIR) + "/distributions/" + stem + ".ini"; }
+
+std::string temporary_file(const std::string& text) {
+  const std::string path = (std::filesystem::temp_directory_path() / "growthuq_test_line.ini").string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+const std::string header = "[line]\nname = test\n";  // lines 1-2
+
+// The error message of reading `body` after the [line] header, with the path stripped.
+std::string error_of(const std::string& body) {
+  const std::string path = temporary_file(header + body);
+  try {
+    read_line_file(path);
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    return message.rfind(path, 0) == 0 ? message.substr(path.size()) : message;
+  }
+  return "no error";
+}
+
+const std::string k_ok = "[k]\nlaw = lognormal\nmedian = 2.87\niqr = 0.83\nunit = N/m\nsource = table\n";
+
+}  // namespace
+
+TEST_CASE("the five shipped line files parse and reproduce the published medians and IQRs") {
+  constexpr double none = -1;  // "--" in the published table
+  struct Published {
+    const char* variable;
+    double median;
+    double iqr;
+  };
+  const std::vector<std::pair<std::string, std::vector<Published>>> table{
+      {"wild_type", {{"k", 2.87, 0.83}, {"h", 145, 31}, {"d", 6.56, 1.19}, {"d0", 5.35, 1.15}, {"tau", 6.81, 3.61}, {"einf", 65.0, 18.2}, {"v_exp", 0.028, 0.011}}},
+      {"xxt1_xxt2", {{"k", none, none}, {"h", 194, none}, {"d", 6.70, none}, {"d0", 5.06, 0.75}, {"tau", 4.38, 3.12}, {"einf", 66.0, 7.4}, {"v_exp", 0.036, 0.008}}},
+      {"xeg113", {{"k", none, 2.53}, {"h", none, 28}, {"d", none, 1.14}, {"d0", 5.51, 1.67}, {"tau", 5.36, 2.56}, {"einf", 59.0, 4.3}, {"v_exp", 0.036, 0.007}}},
+      {"xxt1_xxt2_xeg113", {{"k", none, 2.15}, {"h", none, 48}, {"d", none, 2.16}, {"d0", 6.14, 1.84}, {"tau", 6.09, 0.56}, {"einf", 62.0, 8.4}, {"v_exp", 0.042, 0.007}}},
+      {"pme48", {{"k", 1.95, 0.39}, {"h", 199, 44}, {"d", 5.32, 1.03}, {"d0", 4.51, 1.16}, {"tau", 4.84, 1.63}, {"einf", 66.0, 4.5}, {"v_exp", 0.031, 0.021}}},
+  };
+  for (const auto& [stem, rows] : table) {
+    CAPTURE(stem);
+    const LineDistributions line = read_line_file(shipped(stem));
+    CHECK(line.name == stem);
+    REQUIRE(line.variables.size() == 7);
+    for (const Published& row : rows) {
+      CAPTURE(row.variable);
+      const LineVariable* variable = line.find(row.variable);
+      REQUIRE(variable != nullptr);
+      CHECK(variable->unit->symbol == (std::string(row.variable) == "einf" ? "%" : find_quantity(row.variable)->default_unit));
+      const double median = quantile(variable->distribution, 0.5);
+      const double iqr = quantile(variable->distribution, 0.75) - quantile(variable->distribution, 0.25);
+      // 1e-12 relative: the exact round trip m -> (mu, sigma) -> quantiles loses a few eps,
+      // the IQR as a difference of quartiles ~ eps * m / r more (m / r < 50 here).
+      if (row.median != none) CHECK(std::fabs(median - row.median) <= 1e-12 * row.median);
+      if (row.iqr != none) CHECK(std::fabs(iqr - row.iqr) <= 1e-12 * row.iqr);
+      const bool gap = row.median == none || row.iqr == none;
+      CHECK((variable->source == "illustrative") == gap);
+      if (gap) CHECK(!variable->note.empty());
+    }
+    // Every line keeps the turgid diameter above the plasmolysed one (lambda > 1).
+    CHECK(quantile(line.find("d")->distribution, 0.5) > quantile(line.find("d0")->distribution, 0.5));
+  }
+}
+
+TEST_CASE("line file: every law and its keys") {
+  const std::string path = temporary_file(header +
+      "[k]\nlaw = lognormal\nmu = 1\nsigma = 0.25\nunit = N/m\nsource = s\n"
+      "[h]\nlaw = normal\nmean = 150\nsd = 20\nunit = um\nsource = s\n"
+      "[d]\nlaw = truncated_normal\nmean = 6\nsd = 1\nlower = 4\nupper = inf\nunit = um\nsource = s\n"
+      "[d0]\nlaw = uniform\nlower = 4\nupper = 6\nunit = um\nsource = s\n"
+      "[tau]\nlaw = gamma\nshape = 4\nscale = 1.5\nunit = s\nsource = s\n"
+      "[einf]\nlaw = weibull\nshape = 8\nscale = 0.65\nunit = frac\nsource = illustrative\nnote = why\n"
+      "[v_exp]\nlaw = empirical\nvalues = 0.03, 0.02,0.04 , 0.05\nunit = um/s\nsource = s\n");
+  const LineDistributions line = read_line_file(path);
+  REQUIRE(line.variables.size() == 7);
+  CHECK(std::get<Lognormal>(line.variables[0].distribution).sigma() == 0.25);
+  CHECK(line.variables[1].unit->symbol == "um");
+  CHECK(std::get<TruncatedNormal>(line.variables[2].distribution).upper() == HUGE_VAL);
+  CHECK(std::get<Uniform>(line.variables[3].distribution).upper() == 6);
+  CHECK(std::get<Gamma>(line.variables[4].distribution).scale() == 1.5);
+  CHECK(line.variables[5].note == "why");
+  CHECK(std::get<Empirical>(line.variables[6].distribution).sorted_data() == std::vector<double>{0.02, 0.03, 0.04, 0.05});
+  CHECK(line.variables[4].line == 29);
+
+  // format_line_variable writes a section that reads back to the same law.
+  for (const LineVariable& variable : line.variables) {
+    CAPTURE(variable.name);
+    const LineDistributions again = read_line_file(temporary_file(header + format_line_variable(variable)));
+    const Distribution& d = again.variables.at(0).distribution;
+    CHECK(describe(d) == describe(variable.distribution));
+    for (const double u : {0.1, 0.5, 0.9}) CHECK(quantile(d, u) == quantile(variable.distribution, u));
+  }
+}
+
+TEST_CASE("line file: each mistake is one error naming file and line") {
+  CHECK(error_of(k_ok) == "no error");
+  CHECK(error_of(k_ok + "color = red\n") == ":9: unknown key 'color': expected law, unit, source, note or median and iqr, or mu and sigma");
+  CHECK(error_of(k_ok + "sd = 1\n") == ":9: key 'sd' is not a parameter of law = lognormal (line 4): expected median and iqr, or mu and sigma");
+  CHECK(error_of(k_ok + "mu = 1\n") == ":9: key 'mu' is not a parameter of law = lognormal (line 4): expected median and iqr, or mu and sigma");
+  CHECK(error_of("[k]\nlaw = lognormal\nmedian = 2.87\niqr = -0.3\nunit = N/m\nsource = s\n") == ":6: iqr = '-0.3': expected a positive number");
+  CHECK(error_of("[k]\nlaw = lognormal\nmedian = 2.87\niqr = 0.3x\nunit = N/m\nsource = s\n") == ":6: iqr = '0.3x': expected a finite number");
+  CHECK(error_of("[k]\nlaw = lognormal\nmedian = 2.87\niqr = 0.3\nsource = s\n") == ":3: [k] has no 'unit': expected the unit of the values, e.g. unit = N/m");
+  CHECK(error_of("[k]\nlaw = lognormal\nmedian = 2.87\niqr = 0.3\nunit = MPa\nsource = s\n") ==
+        ":7: unit = 'MPa': expected a unit of stiffness for k (N/m)");
+  CHECK(error_of("[einf]\nlaw = lognormal\nmedian = 65\niqr = 18\nunit = s\nsource = s\n") ==
+        ":7: unit = 's': expected a unit of fraction for einf (frac, %)");
+  CHECK(error_of("[k]\nlaw = lognormal\nmedian = 2.87\niqr = 0.3\nunit = furlong\nsource = s\n").find(":7: unit = 'furlong': expected one of the units") == 0);
+  CHECK(error_of(k_ok + k_ok) == ":9: section [k] repeats the one on line 3");
+  CHECK(error_of("[p]\nlaw = lognormal\nmedian = 0.3\niqr = 0.1\nunit = MPa\nsource = s\n") ==
+        ":3: unknown variable [p]: expected [line] or one of the measured variables k, h, d, d0, tau, einf, v_exp");
+  CHECK(error_of("[k]\nlaw = lognormal\nmedian = 2.87\niqr = 0.3\nunit = N/m\n") ==
+        ":3: [k] has no 'source': expected source = <citation>, or source = illustrative with a note");
+  CHECK(error_of("[k]\nlaw = lognormal\nmedian = 2.87\niqr = 0.3\nunit = N/m\nsource = illustrative\n") ==
+        ":3: [k] source = illustrative needs a one-line 'note' saying why the value was chosen");
+  CHECK(error_of("[k]\nlaw = cauchy\nmedian = 2.87\nunit = N/m\nsource = s\n") ==
+        ":4: law = 'cauchy': expected one of lognormal, normal, truncated_normal, uniform, gamma, weibull, empirical");
+  CHECK(error_of("[k]\nlaw = normal\nmean = 2.87\nunit = N/m\nsource = s\n") ==
+        ":3: [k] law = normal needs 'sd' (parameters: mean, sd)");
+  CHECK(error_of("[k]\nlaw = uniform\nlower = 3\nupper = 2\nunit = N/m\nsource = s\n") ==
+        ":3: [k] uniform: upper = '2': expected a number above lower = 3");
+  CHECK(error_of("[k]\nlaw = empirical\nvalues = 1, x, 3\nunit = N/m\nsource = s\n") == ":5: values = ' x': expected a finite number");
+  CHECK(error_of("[k]\nlaw = empirical\nvalues = 1\nunit = N/m\nsource = s\n") ==
+        ":5: values: expected at least two distinct numbers, got 1 value(s)");
+  CHECK(error_of("[line]\n") == ":3: section [line] repeats the one on line 1");
+
+  const std::string no_name = temporary_file("[line]\ndescription = x\n" + k_ok);
+  CHECK_THROWS_WITH_AS(read_line_file(no_name), (no_name + ":1: [line] has no 'name': expected name = <plant line>").c_str(), InputError);
+  const std::string no_line = temporary_file(k_ok);
+  CHECK_THROWS_WITH_AS(read_line_file(no_line), (no_line + ": no [line] section: expected [line] with name = <plant line>").c_str(), InputError);
+  const std::string stray = temporary_file("name = x\n" + header + k_ok);
+  CHECK_THROWS_WITH_AS(read_line_file(stray), (stray + ":1: 'name = x' comes before any [section]: expected [line] first").c_str(), InputError);
+  const std::string unknown_header_key = temporary_file("[line]\nname = x\nowner = me\n" + k_ok);
+  CHECK_THROWS_WITH_AS(read_line_file(unknown_header_key), (unknown_header_key + ":3: unknown key 'owner' in [line]: expected name or description").c_str(), InputError);
+  CHECK_THROWS_AS(read_line_file("/nonexistent/line.ini"), InputError);
+}
