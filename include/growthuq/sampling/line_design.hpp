@@ -1,0 +1,53 @@
+// The Monte Carlo design of one plant line: a Latin hypercube over the line's variables, mapped
+// through each marginal's quantile and, when a rank correlation target is given, reordered by
+// Iman-Conover. Columns are struct-of-arrays, in the unit the line file gives each variable.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "growthuq/correlation/iman_conover.hpp"
+#include "growthuq/correlation/matrix_file.hpp"
+#include "growthuq/correlation/rank_correlation_target.hpp"
+#include "growthuq/distributions/distribution.hpp"
+#include "growthuq/distributions/line_file.hpp"
+#include "growthuq/sampling/latin_hypercube.hpp"
+
+namespace growthuq {
+
+struct SamplingOptions {
+  std::size_t samples = 1000;  // 1 .. 2^32 - 1
+  std::uint64_t seed = 0;      // campaign seed
+  StratumPosition position = StratumPosition::random;
+};
+
+struct DesignVariable {
+  std::string name;
+  Distribution distribution;
+};
+
+struct LineDesign {
+  std::vector<std::string> names;
+  std::vector<std::vector<std::uint32_t>> ranks;  // ranks[j][i]: stratum (= 0-based rank) of sample i in variable j
+  std::vector<std::vector<double>> values;        // values[j][i]: quantile of variable j at sample i's point
+  std::optional<ImanConoverTarget> target;        // over `names`, when a correlation was requested
+  ImanConoverOutcome correlation;                 // imposed or not, and why not
+  std::vector<std::string> warnings;              // for stderr: repaired target, correlation not imposed
+};
+
+// The design of variables `variables` of line `line_name`: column j comes from the stream
+// stream_key(seed, line_name, variables[j].name) (random_stream.hpp), so it does not depend on
+// the other variables; `target` (over the same variables, in order) reorders the columns.
+LineDesign latin_hypercube_design(std::string_view line_name, const std::vector<DesignVariable>& variables,
+                                  const SamplingOptions& options, const ImanConoverTarget* target);
+
+// The design of a line file's variables. `correlation` may name a subset of them (the others
+// are uncorrelated with everything); a name the line lacks is an InputError naming the file.
+LineDesign sample_line(const LineDistributions& line, const SamplingOptions& options,
+                       const RankCorrelationFile* correlation);
+
+}  // namespace growthuq
