@@ -1,0 +1,73 @@
+// The fast thin-shell model of a pressurized pollen tube (PHYSICS.md section 3): hoop
+// equilibrium with logarithmic strain (Vogler et al. 2013) plus the apparent stiffness under a
+// probe (Arnoldi et al. 2000). Closed-form inverse (k, d, d0 [, h] -> p [, E]) and the forward
+// model (p, E, h, d0 -> d, k). Per-sample functions, SI units, a status instead of NaN.
+#pragma once
+
+#include <limits>
+#include <string_view>
+
+#include "growthuq/evaluation/sample_status.hpp"
+
+namespace growthuq {
+
+// What the instrument and the wall model need besides the per-tube measurements.
+struct ThinShellParameters {
+  // Probe radius rho [m]. Required: it dominates the answer (p falls ~2x from rho = 0.25 to
+  // 1 um), so there is no default; NaN until set, and validate() rejects it.
+  double probe_radius = std::numeric_limits<double>::quiet_NaN();
+  // Poisson ratio nu of the wall, in [0, 1); 0.2 as in the published FEM (Burri et al. 2019).
+  double poisson_ratio = 0.2;
+  // Sensor stiffness k_sys [N/m] in series with the tube, > 0; +inf (an ideal sensor) by default.
+  double sensor_stiffness = std::numeric_limits<double>::infinity();
+};
+
+// InputError("<location>", "<key> = '<value>': expected ...") naming the first bad parameter
+// (keys rho_um, nu, k_sys_N_per_m as users write them).
+void validate(const ThinShellParameters& parameters, std::string_view location);
+
+// Relation 2 inverted for turgor: needs k, d, d0 but not h.
+struct TurgorResult {
+  double lambda;  // d / d0
+  double q;       // (1 - nu^2) ln(lambda), < 1 for a membrane solution
+  double alpha;   // decay length d sqrt(3q / (16 (1 - q))) [m]
+  double x;       // rho / alpha
+  double phi;     // arnoldi_phi(x)
+  double p;       // 4 k / (3 pi d phi) [Pa], k the tube stiffness after the sensor correction
+  SampleStatus status;  // not ok: every field above that could not be computed is NaN
+};
+
+// Measured stiffness k_m [N/m], turgid and plasmolysed diameters [m]. Statuses:
+// invalid_input (a non-finite or non-positive input), stiffness_at_sensor_limit
+// (k_m >= k_sys), lambda_not_above_one (d <= d0), beyond_membrane_limit (q >= 1),
+// out_of_range (p not a finite positive double). ln(lambda) is computed as
+// log1p((d - d0)/d0), exact to rounding even at lambda = 1 + 1e-12.
+TurgorResult invert_turgor(double k_measured, double d, double d0,
+                           const ThinShellParameters& parameters) noexcept;
+
+// Relation 1 solved for the modulus, given turgor: E = p d / (2 h ln lambda).
+struct ModulusResult {
+  double E;               // [Pa]
+  double hoop_stress;     // p d / (2 h) [Pa]
+  double wall_stiffness;  // E h [N/m]
+  SampleStatus status;    // invalid_input, lambda_not_above_one, out_of_range (E overflows)
+};
+
+ModulusResult invert_modulus(double p, double d, double d0, double h) noexcept;
+
+// The forward model: the turgid diameter solves ln(d/d0) = c d, c = p / (2 h E), i.e.
+// d = -W0(-c d0)/c (Lambert W, principal branch), then k from relation 2, as the instrument
+// measures it (in series with k_sys).
+struct ForwardResult {
+  double d;           // [m]
+  double lambda;      // d / d0, in (1, e]
+  double alpha;       // [m]
+  double phi;
+  double k_measured;  // [N/m]
+  SampleStatus status;  // invalid_input, burst (c d0 > 1/e), beyond_membrane_limit, out_of_range
+};
+
+ForwardResult thin_shell_forward(double p, double E, double h, double d0,
+                                 const ThinShellParameters& parameters) noexcept;
+
+}  // namespace growthuq

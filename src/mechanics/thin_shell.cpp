@@ -1,0 +1,169 @@
+// Thin-shell inverse and forward model (PHYSICS.md section 3 and 4). Equations:
+//   relation 1 (Vogler et al. 2013):  p d / (2 h) = E ln(lambda),  lambda = d / d0
+//   relation 2 (Arnoldi et al. 2000): k = (3 pi / 4) p d phi(rho / alpha),
+//                                     alpha^2 = 3 p d^3 / (16 (2 E h / (1 - nu^2) - p d))
+// Substituting 1 into alpha gives alpha = d sqrt(3 q / (16 (1 - q))), q = (1 - nu^2) ln(lambda).
+#include "growthuq/mechanics/thin_shell.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_sf_lambert.h>
+
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+#include "growthuq/mechanics/arnoldi.hpp"
+
+namespace growthuq {
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+bool positive_finite(double value) noexcept { return std::isfinite(value) && value > 0.0; }
+
+// alpha from the stretch measure q in [0, 1): both relations combined.
+double decay_length(double d, double q) noexcept { return d * std::sqrt(3.0 * q / (16.0 * (1.0 - q))); }
+
+void turn_off_gsl_abort() noexcept {
+  static const bool off = [] {
+    gsl_set_error_handler_off();
+    return true;
+  }();
+  (void)off;
+}
+
+}  // namespace
+
+void validate(const ThinShellParameters& parameters, std::string_view location) {
+  if (!positive_finite(parameters.probe_radius)) {
+    throw_bad_value(location, "rho_um",
+                    std::isnan(parameters.probe_radius) ? "" : format_double(parameters.probe_radius * 1e6),
+                    "the probe radius in um, a positive number (required: it has no default)");
+  }
+  if (!(parameters.poisson_ratio > -1.0 && parameters.poisson_ratio < 1.0)) {
+    throw_bad_value(location, "nu", format_double(parameters.poisson_ratio),
+                    "a Poisson ratio in (-1, 1) (0.2 for the published FEM)");
+  }
+  if (!(parameters.sensor_stiffness > 0.0)) {
+    throw_bad_value(location, "k_sys_N_per_m", format_double(parameters.sensor_stiffness),
+                    "a positive sensor stiffness in N/m (or inf for an ideal sensor)");
+  }
+}
+
+TurgorResult invert_turgor(double k_measured, double d, double d0,
+                           const ThinShellParameters& parameters) noexcept {
+  TurgorResult result{nan, nan, nan, nan, nan, nan, SampleStatus::ok};
+  if (!positive_finite(k_measured) || !positive_finite(d) || !positive_finite(d0)) {
+    result.status = SampleStatus::invalid_input;
+    return result;
+  }
+  const double k_sys = parameters.sensor_stiffness;
+  if (k_measured >= k_sys) {
+    result.status = SampleStatus::stiffness_at_sensor_limit;
+    return result;
+  }
+  // Probe and tube in series: 1/k_m = 1/k + 1/k_sys (k_sys = inf leaves k = k_m).
+  const double k = k_measured / (1.0 - k_measured / k_sys);
+
+  result.lambda = d / d0;
+  if (!(d > d0)) {
+    result.status = SampleStatus::lambda_not_above_one;
+    return result;
+  }
+  // d - d0 is exact (Sterbenz) whenever lambda < 2, so ln(lambda) keeps full relative
+  // precision as lambda -> 1, where E = p d / (2 h ln lambda) is most sensitive.
+  const double ln_lambda = std::log1p((d - d0) / d0);
+  const double nu = parameters.poisson_ratio;
+  result.q = (1.0 - nu * nu) * ln_lambda;
+  if (!(result.q < 1.0)) {
+    result.status = SampleStatus::beyond_membrane_limit;
+    return result;
+  }
+  result.alpha = decay_length(d, result.q);
+  result.x = parameters.probe_radius / result.alpha;
+  result.phi = arnoldi_phi(result.x);
+  result.p = 4.0 * k / (3.0 * std::numbers::pi * d * result.phi);
+  if (!positive_finite(result.p) || !positive_finite(k)) {
+    result.p = nan;
+    result.status = SampleStatus::out_of_range;
+  }
+  return result;
+}
+
+ModulusResult invert_modulus(double p, double d, double d0, double h) noexcept {
+  ModulusResult result{nan, nan, nan, SampleStatus::ok};
+  if (!positive_finite(p) || !positive_finite(d) || !positive_finite(d0) || !positive_finite(h)) {
+    result.status = SampleStatus::invalid_input;
+    return result;
+  }
+  if (!(d > d0)) {
+    result.status = SampleStatus::lambda_not_above_one;
+    return result;
+  }
+  const double ln_lambda = std::log1p((d - d0) / d0);
+  result.hoop_stress = p * d / (2.0 * h);
+  result.E = result.hoop_stress / ln_lambda;
+  result.wall_stiffness = result.E * h;
+  if (!positive_finite(result.hoop_stress) || !positive_finite(result.E) ||
+      !positive_finite(result.wall_stiffness)) {
+    result = ModulusResult{nan, nan, nan, SampleStatus::out_of_range};
+  }
+  return result;
+}
+
+ForwardResult thin_shell_forward(double p, double E, double h, double d0,
+                                 const ThinShellParameters& parameters) noexcept {
+  ForwardResult result{nan, nan, nan, nan, nan, SampleStatus::ok};
+  if (!positive_finite(p) || !positive_finite(E) || !positive_finite(h) || !positive_finite(d0)) {
+    result.status = SampleStatus::invalid_input;
+    return result;
+  }
+  // ln(d/d0) = c d has a solution only while c d0 <= 1/e; the principal branch W0 is the
+  // stable one (the smaller diameter). GSL's own 1/e is 1.0 / M_E, the same double as
+  // 1 / std::numbers::e, so z <= 1/e keeps its branch-point argument -z + 1/e >= 0 and gives
+  // W0 = -1 exactly at the limit (lambda = e).
+  const double c = p / (2.0 * h * E);
+  const double z = c * d0;
+  if (!std::isfinite(z)) {
+    result.status = SampleStatus::out_of_range;
+    return result;
+  }
+  if (z > 1.0 / std::numbers::e) {
+    result.status = SampleStatus::burst;
+    return result;
+  }
+  turn_off_gsl_abort();
+  gsl_sf_result w;
+  if (z == 0.0) {
+    w.val = 0.0;  // c d0 underflowed: no stretch to double precision
+  } else if (gsl_sf_lambert_W0_e(-z, &w) != GSL_SUCCESS) {
+    result.status = SampleStatus::out_of_range;
+    return result;
+  }
+  // lambda = -W0(-z)/z (from W e^W = -z): the same W gives d and ln(lambda) = c d = -W.
+  result.lambda = z == 0.0 ? 1.0 : -w.val / z;
+  result.d = d0 * result.lambda;
+  const double ln_lambda = -w.val;
+  if (!(ln_lambda > 0.0)) {
+    result.status = SampleStatus::out_of_range;  // stretch below double resolution
+    return result;
+  }
+  const double nu = parameters.poisson_ratio;
+  const double q = (1.0 - nu * nu) * ln_lambda;
+  if (!(q < 1.0)) {
+    result.status = SampleStatus::beyond_membrane_limit;
+    return result;
+  }
+  result.alpha = decay_length(result.d, q);
+  result.phi = arnoldi_phi(parameters.probe_radius / result.alpha);
+  const double k = 0.75 * std::numbers::pi * p * result.d * result.phi;
+  result.k_measured = k / (1.0 + k / parameters.sensor_stiffness);
+  if (!positive_finite(result.d) || !positive_finite(result.k_measured)) {
+    result.k_measured = nan;
+    result.status = SampleStatus::out_of_range;
+  }
+  return result;
+}
+
+}  // namespace growthuq
