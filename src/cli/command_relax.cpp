@@ -1,9 +1,176 @@
-// SCAFFOLD: replaced by the component that implements 'growthuq relax'.
+// growthuq relax: generalized Maxwell fits of force-relaxation curves, one row per curve in a
+// CSV, a summary on stdout and, on request, lognormal distribution entries for tau and e_inf
+// in the line-file format (PHYSICS.md section 5).
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
 #include "commands.hpp"
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+#include "growthuq/io/csv.hpp"
+#include "growthuq/io/output_file.hpp"
+#include "growthuq/relaxation/analysis.hpp"
+#include "growthuq/relaxation/curves.hpp"
+#include "options.hpp"
 
 namespace growthuq::cli {
+namespace {
 
-int run_relax(const Arguments&) { throw InputError("growthuq relax", "not built yet"); }
+struct RelaxOptions {
+  std::string curves;
+  std::string meta;
+  std::string out;
+  std::string distributions_out;
+  std::optional<double> rho_um;
+  RelaxationOptions analysis;
+  Overwrite overwrite = Overwrite::refuse;
+};
+
+RelaxOptions parse(const Arguments& arguments, bool& run) {
+  RelaxOptions options;
+  po::options_description described("options");
+  double rho_um = 0.0;
+  described.add_options()
+      ("curves", po::value(&options.curves)->required(), "force curves: CSV curve,t_s,F_uN")
+      ("meta", po::value(&options.meta), "per-curve metadata: CSV curve,delta_um,p_MPa,d_um,h_nm[,rho_um] "
+                                         "(default: the same columns in the curves file)")
+      ("out", po::value(&options.out)->required(), "fits, one row per curve (CSV)")
+      ("terms", po::value(&options.analysis.terms)->default_value(2), "exponentials in the Prony series: 1, 2 or 3")
+      ("ramp-aware", po::bool_switch(&options.analysis.ramp_aware),
+       "fit the simulated ramp and hold instead of a step at the force maximum")
+      ("drop-ramp-multiple", po::value(&options.analysis.drop_ramp_multiple)->default_value(0.0),
+       "step fit: leave out hold samples with t < this x ramp time")
+      ("rho-um", po::value(&rho_um), "probe radius (um) for curves without a rho_um column")
+      ("nu", po::value(&options.analysis.poisson)->default_value(0.2, "0.2"), "Poisson ratio of the wall")
+      ("fit-distributions", po::value(&options.distributions_out),
+       "write lognormal [tau] and [einf] line-file sections fitted to the ok curves")
+      ("force", "overwrite existing outputs");
+  po::positional_options_description positional;
+  positional.add("curves", 1);
+  po::variables_map values;
+  run = parse_arguments(arguments, "relax", "CURVES.csv --out FITS.csv [options]",
+                        "Fits a generalized Maxwell (Prony) series to every force-relaxation curve and derives\n"
+                        "tau_slow, E_inf/E_r(0), E0 and the wall viscosity eta = tau_slow E0.",
+                        described, positional, values);
+  if (!run) return options;
+  const int terms = options.analysis.terms;
+  if (terms < 1 || terms > 3) throw_bad_value("growthuq relax", "--terms", std::to_string(terms), "1, 2 or 3");
+  const double nu = options.analysis.poisson;
+  if (!(nu >= 0.0 && nu < 0.5)) throw_bad_value("growthuq relax", "--nu", format_double(nu), "a Poisson ratio in [0, 0.5)");
+  const double drop = options.analysis.drop_ramp_multiple;
+  if (!(drop >= 0.0) || !std::isfinite(drop)) {
+    throw_bad_value("growthuq relax", "--drop-ramp-multiple", format_double(drop), "a number >= 0");
+  }
+  if (options.analysis.ramp_aware && drop > 0.0) {
+    throw InputError("growthuq relax", "--drop-ramp-multiple applies to the step fit only, not with --ramp-aware");
+  }
+  if (values.count("rho-um")) {
+    if (!(rho_um > 0.0) || !std::isfinite(rho_um)) {
+      throw_bad_value("growthuq relax", "--rho-um", format_double(rho_um), "a positive probe radius");
+    }
+    options.rho_um = rho_um * 1e-6;
+  }
+  if (values.count("force")) options.overwrite = Overwrite::allow;
+  return options;
+}
+
+std::string number_or_blank(bool present, double value) {
+  return present && std::isfinite(value) ? format_double(value) : std::string();
+}
+
+std::string fits_csv(const std::vector<CurveFit>& fits, int terms) {
+  CsvWriter writer({"curve", "status", "reason", "terms", "tau_fast_s", "tau_mid_s", "tau_slow_s", "einf_frac",
+                    "E0_MPa", "eta_MPa_s", "Er0_MPa", "tau_slow_se_pct", "rms", "aic", "ramp_time_s", "points"});
+  for (const CurveFit& fit : fits) {
+    const bool fitted = fit.ok && !fit.tau.empty();
+    writer.add_row({fit.curve, fit.ok ? "ok" : "fit_failed", fit.reason, std::to_string(terms),
+                    number_or_blank(fitted && terms > 1, fit.tau.empty() ? 0.0 : fit.tau.front()),
+                    number_or_blank(fitted && terms == 3, fit.tau.size() == 3 ? fit.tau[1] : 0.0),
+                    number_or_blank(fitted, fit.tau.empty() ? 0.0 : fit.tau.back()),
+                    number_or_blank(fitted, fit.einf), number_or_blank(fitted, fit.slow_modulus * 1e-6),
+                    number_or_blank(fitted, fit.viscosity * 1e-6), number_or_blank(fitted, fit.modulus0 * 1e-6),
+                    number_or_blank(fitted, fit.tau_slow_relative_se * 100.0),
+                    number_or_blank(fit.points > 0, fit.rms), number_or_blank(fit.points > 0, fit.aic),
+                    format_double(fit.ramp_time), std::to_string(fit.points)});
+  }
+  return writer.text();
+}
+
+// Lognormal maximum likelihood: mu = mean ln x, sigma = sqrt(mean (ln x - mu)^2) (the 1/N
+// estimator is the maximum-likelihood one).
+std::string lognormal_section(std::string_view name, std::string_view unit, const std::vector<double>& values,
+                              std::string_view source) {
+  double mu = 0.0;
+  for (double v : values) mu += std::log(v);
+  mu /= static_cast<double>(values.size());
+  double variance = 0.0;
+  for (double v : values) variance += (std::log(v) - mu) * (std::log(v) - mu);
+  const double sigma = std::sqrt(variance / static_cast<double>(values.size()));
+  std::ostringstream out;
+  out << "[" << name << "]\nlaw = lognormal\nmu = " << format_double(mu) << "\nsigma = " << format_double(sigma)
+      << "\nunit = " << unit << "\nsource = " << source << "\n";
+  return out.str();
+}
+
+std::string distributions_text(const std::vector<CurveFit>& fits, const std::string& curves_path) {
+  std::vector<double> tau, einf;
+  for (const CurveFit& fit : fits) {
+    if (!fit.ok) continue;
+    tau.push_back(fit.tau.back());
+    einf.push_back(fit.einf);
+  }
+  if (tau.size() < 2) {
+    throw InputError("--fit-distributions", std::to_string(tau.size()) +
+                                                " curve(s) with status ok: expected at least 2 to fit a lognormal");
+  }
+  const std::string source = "fitted from " + curves_path + ", " + std::to_string(tau.size()) + " curves";
+  return "# Written by growthuq relax: lognormal maximum-likelihood fits to the per-curve slow relaxation\n"
+         "# time and rescaled equilibrium modulus E_inf/E_r(0) of the curves with status ok.\n" +
+         lognormal_section("tau", "s", tau, source) + "\n" + lognormal_section("einf", "frac", einf, source);
+}
+
+void print_summary(const std::vector<CurveFit>& fits, const RelaxOptions& options) {
+  std::cout << "growthuq relax: " << fits.size() << " curve(s) from " << options.curves << ", "
+            << options.analysis.terms << "-term " << (options.analysis.ramp_aware ? "ramp-aware" : "step") << " fit\n";
+  std::size_t ok = 0;
+  for (const CurveFit& fit : fits) {
+    std::cout << "  " << fit.curve << ": ";
+    if (fit.ok) {
+      ++ok;
+      std::cout << "tau_slow " << format_double(std::round(fit.tau.back() * 1e3) / 1e3) << " s, E_inf/E_r(0) "
+                << format_double(std::round(fit.einf * 1e3) / 1e3) << ", eta "
+                << format_double(std::round(fit.viscosity * 1e-6 * 10) / 10) << " MPa s\n";
+    } else {
+      std::cout << "fit_failed: " << fit.reason << "\n";
+    }
+  }
+  std::cout << ok << " ok, " << fits.size() - ok << " failed; fits in " << options.out << "\n";
+}
+
+}  // namespace
+
+int run_relax(const Arguments& arguments) {
+  bool run = true;
+  const RelaxOptions options = parse(arguments, run);
+  if (!run) return 0;
+  check_can_write(options.out, options.overwrite);
+  if (!options.distributions_out.empty()) check_can_write(options.distributions_out, options.overwrite);
+
+  const std::vector<RelaxationCurve> curves = read_relaxation_curves(options.curves, options.meta, options.rho_um);
+  std::vector<CurveFit> fits;
+  for (const RelaxationCurve& curve : curves) fits.push_back(analyze_relaxation_curve(curve, options.analysis));
+
+  const std::string distributions =
+      options.distributions_out.empty() ? std::string() : distributions_text(fits, options.curves);
+  write_file_atomically(options.out, fits_csv(fits, options.analysis.terms), options.overwrite);
+  if (!options.distributions_out.empty()) {
+    write_file_atomically(options.distributions_out, distributions, options.overwrite);
+  }
+  print_summary(fits, options);
+  return 0;
+}
 
 }  // namespace growthuq::cli

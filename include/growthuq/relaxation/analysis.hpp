@@ -1,0 +1,47 @@
+// From one measured force-relaxation curve to the wall's relaxation parameters: locate the
+// hold, map k(t) = F(t) / delta to E_r(t), fit the Prony series (step or ramp-aware) and
+// derive E0 and the viscosity eta = tau_slow E0 (PHYSICS.md section 5).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "growthuq/relaxation/curves.hpp"
+
+namespace growthuq {
+
+struct RelaxationOptions {
+  int terms = 2;                    // exponentials in the Prony series: 1, 2 or 3
+  double poisson = 0.2;             // nu of the wall (published FEM value)
+  bool ramp_aware = false;          // fit the ramp and the hold with the simulator
+  double drop_ramp_multiple = 0.0;  // step fit only: ignore hold samples with t < this x ramp time
+};
+
+struct CurveFit {
+  std::string curve;
+  bool ok = false;
+  std::string reason;             // why not ok
+  std::vector<double> tau;        // s, fastest first
+  double einf = 0.0;              // E_inf / E_r(0)
+  double modulus0 = 0.0;          // E_r(0) (Pa): first sample of the hold (step fit) or the
+                                  // instantaneous modulus of the fitted springs (ramp-aware)
+  double slow_modulus = 0.0;      // E0 = amplitude of the slow term (Pa)
+  double viscosity = 0.0;         // eta = tau_slow E0 (Pa s)
+  double tau_slow_relative_se = 0.0;  // linearized standard error of tau_slow / tau_slow (for
+                                      // the ramp-aware fit: of the springs' slow time)
+  double rms = 0.0;               // residual of the data: of E_r / E_r(0) (step), F / F_peak (ramp-aware)
+  double aic = 0.0;
+  double ramp_time = 0.0;         // s: first sample to force maximum (step), fitted (ramp-aware)
+  std::size_t points = 0;         // samples fitted
+};
+
+// Hold = samples from the force maximum on (t = 0 there, E_r(0) its modulus); ramp time =
+// time of the maximum minus time of the first sample. Step fit: Prony series on E_r / E_r(0)
+// over t >= drop_ramp_multiple x ramp time; taus bounded by [median sampling interval, hold
+// length]. Ramp-aware fit: simulator basis on F over ramp and hold. Never throws for
+// bad data: a failed or ill-conditioned fit comes back with ok = false and a reason.
+// Ramp-aware: the springs fitted to the force are turned into a step response k(t), mapped to
+// E_r(t) / E_r(0) and fitted like a step (see the .cpp), so both fits report the same quantity.
+CurveFit analyze_relaxation_curve(const RelaxationCurve& curve, const RelaxationOptions& options);
+
+}  // namespace growthuq

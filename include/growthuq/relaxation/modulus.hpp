@@ -1,0 +1,20 @@
+// Apparent relaxation modulus of the wall from the probe's stiffness (PHYSICS.md section 5):
+// Arnoldi et al. (2000) relation k = (3 pi / 4) p d phi(rho / alpha) inverted at fixed p, d.
+#pragma once
+
+namespace growthuq {
+
+struct ShellGeometry {
+  double turgor = 0.0;        // p (Pa)
+  double diameter = 0.0;      // d (m)
+  double thickness = 0.0;     // h (m)
+  double probe_radius = 0.0;  // rho (m)
+  double poisson = 0.2;       // nu
+};
+
+// E_r for a stiffness k >= 0 (N/m): phi = 4 k / (3 pi p d), x = phi^-1(phi), alpha = rho / x,
+// then 2 E_r h / (1 - nu^2) = p d + 3 p d^3 / (16 alpha^2) (alpha^2 definition of Arnoldi et
+// al. 2000 solved for E). k = 0 gives the membrane limit (1 - nu^2) p d / (2 h).
+double relaxation_modulus(double k, const ShellGeometry& shell);
+
+}  // namespace growthuq

@@ -1,0 +1,139 @@
+#include "growthuq/relaxation/analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+#include "growthuq/relaxation/modulus.hpp"
+#include "growthuq/relaxation/prony_fit.hpp"
+
+namespace growthuq {
+namespace {
+
+double median_interval(std::span<const double> t) {
+  std::vector<double> intervals;
+  for (std::size_t i = 1; i < t.size(); ++i) intervals.push_back(t[i] - t[i - 1]);
+  std::nth_element(intervals.begin(), intervals.begin() + static_cast<std::ptrdiff_t>(intervals.size() / 2), intervals.end());
+  return intervals[intervals.size() / 2];
+}
+
+void fail(CurveFit& result, std::string reason) {
+  result.ok = false;
+  result.reason = std::move(reason);
+}
+
+// Step fit: E_r(t) / E_r(0) over the hold as if the indentation had been a step at the force
+// maximum; hold samples earlier than drop_ramp_multiple x ramp time are left out of the fit.
+void fit_step(const RelaxationCurve& curve, const RelaxationOptions& options, std::size_t peak,
+              const ShellGeometry& shell, CurveFit& result) {
+  std::vector<double> t, y;
+  result.modulus0 = relaxation_modulus(curve.force[peak] / curve.indentation, shell);
+  const double start = options.drop_ramp_multiple * result.ramp_time;
+  for (std::size_t i = peak; i < curve.t.size(); ++i) {
+    const double since_peak = curve.t[i] - curve.t[peak];
+    if (since_peak < start) continue;
+    t.push_back(since_peak);
+    y.push_back(relaxation_modulus(curve.force[i] / curve.indentation, shell) / result.modulus0);
+  }
+  if (!std::isfinite(result.modulus0) || !std::all_of(y.begin(), y.end(), [](double v) { return std::isfinite(v); })) {
+    return fail(result, "the apparent modulus E_r(t) is not finite for this p, d, h, rho");
+  }
+  const std::size_t needed = std::max<std::size_t>(10, 2 * static_cast<std::size_t>(options.terms) + 2);
+  if (t.size() < needed) {
+    return fail(result, std::to_string(t.size()) + " hold samples after t >= " + format_double(start) +
+                            " s (" + format_double(options.drop_ramp_multiple) + " x ramp time " +
+                            format_double(result.ramp_time) + " s): expected at least " + std::to_string(needed));
+  }
+  PronyFitOptions fit_options;
+  fit_options.terms = options.terms;
+  fit_options.tau_min = median_interval(curve.t);
+  fit_options.tau_max = curve.t.back() - curve.t[peak];
+  const PronyFit fit = fit_prony(t, y, fit_options);
+  result.points = fit.points;
+  result.tau = fit.tau;
+  result.einf = fit.einf;
+  result.slow_modulus = fit.amplitude.back() * result.modulus0;
+  result.viscosity = fit.tau.back() * result.slow_modulus;
+  result.rms = fit.rms;
+  result.aic = fit.aic;
+  result.tau_slow_relative_se = fit.tau_relative_se.back();
+  if (!fit.ok) fail(result, fit.reason);
+}
+
+// Ramp-aware fit, in two steps. (1) The simulated ramp (linear from 0 at the first sample to
+// delta at a fitted time next to the force maximum) and hold of a generalized Maxwell spring is fitted to F(t):
+// this removes the ramp in force space, where the superposition it relies on holds. (2) The
+// fitted step response k(t) = k_inf + sum_i k_i exp(-t / tau_i), sampled like the hold, is
+// mapped to E_r(t) / E_r(0) and fitted like a measured step. E_r(k) is nonlinear (close to
+// E ~ k^2 at physiological x = rho/alpha), so the moduli's taus are not the springs' taus.
+void fit_ramp(const RelaxationCurve& curve, const RelaxationOptions& options, std::size_t peak,
+              const ShellGeometry& shell, CurveFit& result) {
+  std::vector<double> t;
+  for (double time : curve.t) t.push_back(time - curve.t.front());
+  PronyFitOptions fit_options;
+  fit_options.terms = options.terms;
+  fit_options.tau_min = median_interval(curve.t);
+  fit_options.tau_max = curve.t.back() - curve.t[peak];
+  // The ramp ends between the samples either side of the force maximum.
+  const double before = peak > 0 ? t[peak - 1] : 0.0;
+  const double after = peak + 1 < t.size() ? t[peak + 1] : t[peak];
+  const PronyFit springs = fit_ramp_hold(t, curve.force, before, after, curve.indentation, fit_options);
+  result.ramp_time = springs.ramp_time;
+  result.rms = springs.rms / curve.force[peak];
+  if (!springs.ok) return fail(result, "ramp and hold: " + springs.reason);
+
+  std::vector<double> hold_t, y;
+  for (std::size_t i = peak; i < curve.t.size(); ++i) {
+    const double since_peak = curve.t[i] - curve.t[peak];
+    double k = springs.einf;
+    for (std::size_t m = 0; m < springs.tau.size(); ++m) k += springs.amplitude[m] * std::exp(-since_peak / springs.tau[m]);
+    hold_t.push_back(since_peak);
+    y.push_back(relaxation_modulus(k, shell));
+  }
+  result.modulus0 = y.front();
+  for (double& value : y) value /= result.modulus0;
+  if (!std::all_of(y.begin(), y.end(), [](double v) { return std::isfinite(v); })) {
+    return fail(result, "the apparent modulus E_r(t) is not finite for this p, d, h, rho");
+  }
+  const PronyFit moduli = fit_prony(hold_t, y, fit_options);
+  result.points = springs.points;
+  result.tau = moduli.tau;
+  result.einf = moduli.einf;
+  result.slow_modulus = moduli.amplitude.back() * result.modulus0;
+  result.viscosity = moduli.tau.back() * result.slow_modulus;
+  result.tau_slow_relative_se = springs.tau_relative_se.back();
+  result.aic = springs.aic;
+  if (!moduli.ok) fail(result, "step response in E_r: " + moduli.reason);
+}
+
+}  // namespace
+
+CurveFit analyze_relaxation_curve(const RelaxationCurve& curve, const RelaxationOptions& options) {
+  CurveFit result;
+  result.curve = curve.name;
+  result.ok = true;
+  const auto peak = static_cast<std::size_t>(std::max_element(curve.force.begin(), curve.force.end()) - curve.force.begin());
+  result.ramp_time = curve.t[peak] - curve.t.front();
+  const std::size_t hold = curve.t.size() - peak;
+  const std::size_t needed = std::max<std::size_t>(10, 2 * static_cast<std::size_t>(options.terms) + 2);
+  if (hold < needed) {
+    fail(result, "the force maximum is " + std::to_string(hold - 1) +
+                     " samples before the end: expected a hold of at least " + std::to_string(needed) + " samples");
+    return result;
+  }
+  const ShellGeometry shell{curve.turgor, curve.diameter, curve.thickness, curve.probe_radius, options.poisson};
+  try {
+    if (options.ramp_aware) {
+      fit_ramp(curve, options, peak, shell, result);
+    } else {
+      fit_step(curve, options, peak, shell, result);
+    }
+  } catch (const std::exception& error) {  // InputError from the fit's own checks, CVODE failures
+    fail(result, error.what());
+  }
+  return result;
+}
+
+}  // namespace growthuq

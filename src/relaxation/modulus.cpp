@@ -1,0 +1,20 @@
+#include "growthuq/relaxation/modulus.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "growthuq/mechanics/arnoldi.hpp"
+
+namespace growthuq {
+
+double relaxation_modulus(double k, const ShellGeometry& shell) {
+  const double p = shell.turgor, d = shell.diameter;
+  const double phi = 4.0 * k / (3.0 * std::numbers::pi * p * d);
+  const double x = arnoldi_phi_inverse(phi);
+  // 1 / alpha^2 = x^2 / rho^2; x underflowing to 0 is the membrane limit alpha -> infinity.
+  const double inverse_alpha_squared = (x / shell.probe_radius) * (x / shell.probe_radius);
+  const double membrane = p * d + 3.0 * p * d * d * d * inverse_alpha_squared / 16.0;
+  return (1.0 - shell.poisson * shell.poisson) * membrane / (2.0 * shell.thickness);
+}
+
+}  // namespace growthuq

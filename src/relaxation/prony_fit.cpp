@@ -1,0 +1,293 @@
+#include "growthuq/relaxation/prony_fit.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_multimin.h>
+
+#include <cmath>
+#include <functional>
+#include <iomanip>
+#include <limits>
+#include <memory>
+#include <sstream>
+
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+#include "growthuq/relaxation/nnls.hpp"
+#include "growthuq/relaxation/simulator.hpp"
+
+namespace growthuq {
+namespace {
+
+// Columns of the linear model for given relaxation times: column 0 the constant (or k_inf)
+// term, column i + 1 the i-th mode. The amplitudes are the NNLS solution on these columns.
+// `extra` is one more nonlinear parameter some bases have (the ramp-aware fit's ramp time).
+using Basis = std::function<Eigen::MatrixXd(const std::vector<double>& tau, double extra)>;
+
+struct Projection {
+  Eigen::VectorXd coefficients;
+  double rss = 0.0;
+};
+
+// Variable projection: for fixed taus the best non-negative amplitudes and the residual.
+// Columns are scaled to unit norm for NNLS (a slow and a fast exponential differ in norm by
+// orders of magnitude) and the coefficients scaled back.
+Projection project(const Eigen::MatrixXd& basis, const Eigen::VectorXd& y) {
+  Eigen::VectorXd norms = basis.colwise().norm().transpose();
+  for (Eigen::Index j = 0; j < norms.size(); ++j) {
+    if (!(norms(j) > 0.0)) norms(j) = 1.0;
+  }
+  const Eigen::MatrixXd scaled = basis * norms.cwiseInverse().asDiagonal();
+  Projection projection;
+  projection.coefficients = solve_nnls(scaled, y).cwiseQuotient(norms);
+  projection.rss = (basis * projection.coefficients - y).squaredNorm();
+  return projection;
+}
+
+// Ordered, bounded taus from unconstrained z: s_i = s_{i-1} + (ln tau_max - s_{i-1}) sigma(z_i),
+// s_0 = ln tau_min, sigma the logistic function; then tau_min < tau_1 < ... < tau_max for every
+// real z, so a derivative-free search needs no constraint handling.
+std::vector<double> taus_from(const gsl_vector* z, std::size_t terms, double log_min, double log_max) {
+  std::vector<double> tau(terms);
+  double lower = log_min;
+  for (std::size_t i = 0; i < terms; ++i) {
+    const double fraction = 1.0 / (1.0 + std::exp(-gsl_vector_get(z, i)));
+    lower += (log_max - lower) * fraction;
+    tau[i] = std::exp(lower);
+  }
+  return tau;
+}
+
+// The inverse map, for starting points given as ordered log taus strictly inside the bounds.
+void z_from(const std::vector<double>& log_tau, double log_min, double log_max, gsl_vector* z) {
+  double lower = log_min;
+  for (std::size_t i = 0; i < log_tau.size(); ++i) {
+    const double fraction = (log_tau[i] - lower) / (log_max - lower);
+    gsl_vector_set(z, i, std::log(fraction / (1.0 - fraction)));
+    lower = log_tau[i];
+  }
+}
+
+struct Problem {
+  const Basis* basis;
+  const Eigen::VectorXd* y;
+  std::size_t terms;
+  double log_min;
+  double log_max;
+  double scale;  // 1 / |y|^2, so that the simplex tolerance is scale-free
+  double extra_min = 0.0;  // bounds of the extra parameter when extra_min < extra_max; it is
+  double extra_max = 0.0;  // then the last z, mapped by the logistic function like the taus
+};
+
+double extra_from(const gsl_vector* z, const Problem& problem) {
+  if (!(problem.extra_max > problem.extra_min)) return problem.extra_min;
+  const double fraction = 1.0 / (1.0 + std::exp(-gsl_vector_get(z, problem.terms)));
+  return problem.extra_min + (problem.extra_max - problem.extra_min) * fraction;
+}
+
+double projected_residual(const gsl_vector* z, void* data) {
+  const auto& problem = *static_cast<const Problem*>(data);
+  const auto tau = taus_from(z, problem.terms, problem.log_min, problem.log_max);
+  const double rss = project((*problem.basis)(tau, extra_from(z, problem)), *problem.y).rss;
+  return std::isfinite(rss) ? rss * problem.scale : std::numeric_limits<double>::max();
+}
+
+struct Minimum {
+  std::vector<double> tau;
+  double extra = 0.0;
+  double objective = std::numeric_limits<double>::infinity();
+  bool converged = false;
+};
+
+// Nelder-Mead (GSL nmsimplex2) from one start. The projected residual is continuous but not
+// smooth where NNLS's active set changes, and it has at most three unknowns: a simplex is
+// robust there and cheap, where gsl_multifit_nlinear would need a Jacobian of a non-smooth map.
+Minimum minimize_from(const std::vector<double>& start, Problem& problem) {
+  const bool has_extra = problem.extra_max > problem.extra_min;
+  const std::size_t n = start.size() + (has_extra ? 1 : 0);
+  gsl_multimin_function function{projected_residual, n, &problem};
+  std::unique_ptr<gsl_vector, decltype(&gsl_vector_free)> z(gsl_vector_alloc(n), gsl_vector_free);
+  std::unique_ptr<gsl_vector, decltype(&gsl_vector_free)> step(gsl_vector_alloc(n), gsl_vector_free);
+  z_from(start, problem.log_min, problem.log_max, z.get());
+  if (has_extra) gsl_vector_set(z.get(), start.size(), 0.0);  // the middle of its interval
+  gsl_vector_set_all(step.get(), 1.0);
+  std::unique_ptr<gsl_multimin_fminimizer, decltype(&gsl_multimin_fminimizer_free)> minimizer(
+      gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, n), gsl_multimin_fminimizer_free);
+  gsl_multimin_fminimizer_set(minimizer.get(), &function, z.get(), step.get());
+
+  Minimum minimum;
+  for (int iteration = 0; iteration < 600 * static_cast<int>(n); ++iteration) {
+    if (gsl_multimin_fminimizer_iterate(minimizer.get()) != GSL_SUCCESS) break;
+    // 1e-6 in z is 1e-6 relative in tau away from the bounds: far below any data's resolution.
+    if (gsl_multimin_test_size(gsl_multimin_fminimizer_size(minimizer.get()), 1e-6) == GSL_SUCCESS) {
+      minimum.converged = true;
+      break;
+    }
+  }
+  minimum.tau = taus_from(gsl_multimin_fminimizer_x(minimizer.get()), problem.terms, problem.log_min, problem.log_max);
+  minimum.extra = extra_from(gsl_multimin_fminimizer_x(minimizer.get()), problem);
+  minimum.objective = gsl_multimin_fminimizer_minimum(minimizer.get());
+  return minimum;
+}
+
+// Starting log taus: every ordered choice of `terms` among `levels` points spread evenly
+// inside [log_min, log_max] (5 starts for 1 term, 6 for 2, 10 for 3).
+std::vector<std::vector<double>> starting_points(int terms, double log_min, double log_max) {
+  const int levels = terms == 2 ? 4 : 5;
+  std::vector<std::vector<double>> starts;
+  std::vector<int> choice(static_cast<std::size_t>(terms));
+  std::function<void(int, int)> choose = [&](int position, int first) {
+    if (position == terms) {
+      std::vector<double> start;
+      for (int level : choice) start.push_back(log_min + (log_max - log_min) * (level + 0.5) / levels);
+      starts.push_back(start);
+      return;
+    }
+    for (int level = first; level < levels; ++level) {
+      choice[static_cast<std::size_t>(position)] = level;
+      choose(position + 1, level + 1);
+    }
+  };
+  choose(0, 0);
+  return starts;
+}
+
+std::string tau_name(int terms, std::size_t i) {
+  if (terms == 1) return "tau";
+  if (i == 0) return "tau_fast";
+  if (i + 1 == static_cast<std::size_t>(terms)) return "tau_slow";
+  return "tau_mid";
+}
+
+void validate(std::span<const double> t, std::span<const double> y, const PronyFitOptions& options,
+              const char* where) {
+  if (options.terms < 1 || options.terms > 3) {
+    throw_bad_value(where, "terms", std::to_string(options.terms), "1, 2 or 3");
+  }
+  if (!(options.tau_min > 0.0) || !(options.tau_max > options.tau_min) || !std::isfinite(options.tau_max)) {
+    throw InputError(where, "tau bounds [" + format_double(options.tau_min) + ", " + format_double(options.tau_max) +
+                                "] s: expected 0 < tau_min < tau_max");
+  }
+  if (t.size() != y.size()) throw InputError(where, "times and values differ in number");
+  const std::size_t needed = 2 * static_cast<std::size_t>(options.terms) + 2;
+  if (t.size() < needed) {
+    throw InputError(where, std::to_string(t.size()) + " points: expected at least " + std::to_string(needed));
+  }
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!std::isfinite(t[i]) || !std::isfinite(y[i])) throw InputError(where, "a time or value is not finite");
+  }
+}
+
+PronyFit fit(const Basis& basis, std::span<const double> values, const PronyFitOptions& options,
+             double extra_min = 0.0, double extra_max = 0.0) {
+  const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
+  Problem problem{&basis, &y, static_cast<std::size_t>(options.terms), std::log(options.tau_min), std::log(options.tau_max),
+                  1.0 / std::max(y.squaredNorm(), 1e-300), extra_min, extra_max};
+
+  Minimum best;
+  for (const auto& start : starting_points(options.terms, problem.log_min, problem.log_max)) {
+    Minimum candidate = minimize_from(start, problem);
+    if (candidate.objective < best.objective) best = candidate;
+  }
+
+  const Eigen::MatrixXd columns = basis(best.tau, best.extra);
+  const Projection projection = project(columns, y);
+  const auto n = static_cast<double>(values.size());
+  const int terms = options.terms;
+  PronyFit result;
+  result.points = values.size();
+  result.tau = best.tau;
+  result.ramp_time = best.extra;
+  result.einf = projection.coefficients(0);
+  for (int i = 0; i < terms; ++i) result.amplitude.push_back(projection.coefficients(i + 1));
+  result.rms = std::sqrt(projection.rss / n);
+  result.aic = n * std::log(std::max(projection.rss, 1e-300) / n) + 2.0 * (2.0 * terms + 1.0);
+
+  // Linearized standard errors of ln tau_i (Gauss-Newton covariance s^2 (J^T J)^-1 over the
+  // amplitudes and ln taus; the ln tau columns by central differences of the basis).
+  const Eigen::Index p = 2 * terms + 1;
+  Eigen::MatrixXd jacobian(columns.rows(), p);
+  jacobian.leftCols(terms + 1) = columns;
+  for (int i = 0; i < terms; ++i) {
+    constexpr double h = 1e-4;
+    std::vector<double> up = best.tau, down = best.tau;
+    up[static_cast<std::size_t>(i)] *= std::exp(h);
+    down[static_cast<std::size_t>(i)] *= std::exp(-h);
+    jacobian.col(terms + 1 + i) = projection.coefficients(i + 1) * (basis(up, best.extra).col(i + 1) - basis(down, best.extra).col(i + 1)) / (2.0 * h);
+  }
+  const double variance = projection.rss / std::max(n - static_cast<double>(p), 1.0);
+  const Eigen::MatrixXd normal = jacobian.transpose() * jacobian;
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(normal);
+  for (int i = 0; i < terms; ++i) {
+    double se = std::numeric_limits<double>::infinity();
+    if (lu.isInvertible()) {
+      const double entry = lu.inverse()(terms + 1 + i, terms + 1 + i) * variance;
+      if (entry >= 0.0) se = std::sqrt(entry);
+    }
+    result.tau_relative_se.push_back(se);
+  }
+
+  auto describe_tau = [&](std::size_t i) {
+    std::ostringstream text;
+    text << std::setprecision(4) << tau_name(terms, i) << " = " << best.tau[i] << " s";
+    return text.str();
+  };
+  const double lower = options.tau_min * (1.0 + options.bound_margin);
+  const double upper = options.tau_max / (1.0 + options.bound_margin);
+  for (std::size_t i = 0; i < best.tau.size() && result.reason.empty(); ++i) {
+    if (!(result.amplitude[i] > 0.0)) {
+      result.reason = describe_tau(i) + " has zero amplitude: the data hold fewer than " + std::to_string(terms) + " exponentials";
+    } else if (best.tau[i] < lower) {
+      result.reason = describe_tau(i) + " is at the lower bound " + format_double(options.tau_min) +
+                      " s (sampling interval): faster than the record resolves";
+    } else if (best.tau[i] > upper) {
+      result.reason = describe_tau(i) + " is at the upper bound " + format_double(options.tau_max) +
+                      " s (record length): slower than the record resolves";
+    }
+  }
+  for (std::size_t i = 0; i + 1 < best.tau.size() && result.reason.empty(); ++i) {
+    if (best.tau[i + 1] < options.min_separation * best.tau[i]) {
+      result.reason = describe_tau(i) + " and " + describe_tau(i + 1) + " are within " +
+                      format_double(std::round((options.min_separation - 1.0) * 100.0)) + " % of each other: not separable";
+    }
+  }
+  for (std::size_t i = 0; i < best.tau.size() && result.reason.empty(); ++i) {
+    if (!(result.tau_relative_se[i] <= options.max_relative_se)) {
+      result.reason = describe_tau(i) + " is undetermined by the data (standard error " +
+                      (std::isfinite(result.tau_relative_se[i]) ? format_double(std::round(result.tau_relative_se[i] * 100.0)) + " %)"
+                                                                 : std::string("unbounded)"));
+    }
+  }
+  if (result.reason.empty() && !best.converged) result.reason = "the simplex search did not converge";
+  result.ok = result.reason.empty();
+  return result;
+}
+
+}  // namespace
+
+PronyFit fit_prony(std::span<const double> t, std::span<const double> y, const PronyFitOptions& options) {
+  validate(t, y, options, "fit_prony");
+  const Basis basis = [t](const std::vector<double>& tau, double) {
+    Eigen::MatrixXd columns(static_cast<Eigen::Index>(t.size()), static_cast<Eigen::Index>(tau.size() + 1));
+    for (std::size_t r = 0; r < t.size(); ++r) {
+      const auto row = static_cast<Eigen::Index>(r);
+      columns(row, 0) = 1.0;
+      for (std::size_t i = 0; i < tau.size(); ++i) columns(row, static_cast<Eigen::Index>(i + 1)) = std::exp(-t[r] / tau[i]);
+    }
+    return columns;
+  };
+  return fit(basis, y, options);
+}
+
+PronyFit fit_ramp_hold(std::span<const double> t, std::span<const double> force, double ramp_time_min,
+                       double ramp_time_max, double indentation, const PronyFitOptions& options) {
+  validate(t, force, options, "fit_ramp_hold");
+  if (!(ramp_time_min >= 0.0) || !(ramp_time_max >= ramp_time_min) || !(indentation > 0.0)) {
+    throw InputError("fit_ramp_hold", "expected 0 <= ramp_time_min <= ramp_time_max and indentation > 0");
+  }
+  const Basis basis = [t, indentation](const std::vector<double>& tau, double ramp_time) {
+    return maxwell_mode_responses(tau, ramp_time, indentation, t);
+  };
+  return fit(basis, force, options, ramp_time_min, ramp_time_max);
+}
+
+}  // namespace growthuq

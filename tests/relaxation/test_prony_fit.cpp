@@ -1,0 +1,178 @@
+// Non-negative least squares against brute force, and the variable-projection Prony fit
+// against known truth: exact series, noisy series, simulated ramp-and-hold experiments, and the
+// ill-conditioned cases it must report rather than hide.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+
+#include "growthuq/core/error.hpp"
+#include "growthuq/relaxation/nnls.hpp"
+#include "growthuq/relaxation/noise.hpp"
+#include "growthuq/relaxation/prony_fit.hpp"
+#include "growthuq/relaxation/simulator.hpp"
+
+using namespace growthuq;
+
+namespace {
+
+// Brute force: the NNLS solution is the least-squares solution on some subset of columns with
+// all coefficients positive; the best such subset is the optimum (Lawson and Hanson, ch. 23).
+double brute_force_nnls_rss(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
+  double best = b.squaredNorm();
+  const auto n = A.cols();
+  for (int mask = 1; mask < (1 << n); ++mask) {
+    std::vector<Eigen::Index> columns;
+    for (Eigen::Index j = 0; j < n; ++j) {
+      if (mask & (1 << j)) columns.push_back(j);
+    }
+    Eigen::MatrixXd sub(A.rows(), static_cast<Eigen::Index>(columns.size()));
+    for (std::size_t c = 0; c < columns.size(); ++c) sub.col(static_cast<Eigen::Index>(c)) = A.col(columns[c]);
+    const Eigen::VectorXd x = sub.colPivHouseholderQr().solve(b);
+    if ((x.array() > 0.0).all()) best = std::min(best, (sub * x - b).squaredNorm());
+  }
+  return best;
+}
+
+struct Series {
+  std::vector<double> t, y;
+};
+
+// y = einf + sum a_i exp(-t / tau_i) sampled at dt over [0, T], plus Gaussian noise of sd
+// `noise` (relative to y(0) = 1).
+Series prony_series(double einf, std::vector<double> a, std::vector<double> tau, double dt, double T,
+                    double noise, std::uint64_t seed) {
+  GaussianNoise gaussian(seed);
+  Series s;
+  for (int j = 0; dt * j <= T + 1e-12; ++j) {
+    const double t = dt * j;
+    double y = einf;
+    for (std::size_t i = 0; i < a.size(); ++i) y += a[i] * std::exp(-t / tau[i]);
+    s.t.push_back(t);
+    s.y.push_back(y + noise * gaussian.normal());
+  }
+  return s;
+}
+
+PronyFitOptions options_for(const Series& s, int terms) {
+  PronyFitOptions options;
+  options.terms = terms;
+  options.tau_min = s.t[1] - s.t[0];
+  options.tau_max = s.t.back();
+  return options;
+}
+
+}  // namespace
+
+TEST_CASE("nnls: matches the brute-force optimum over active sets") {
+  GaussianNoise gaussian(11);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Eigen::Index n = 1 + trial % 5;
+    Eigen::MatrixXd A(12, n);
+    Eigen::VectorXd b(12);
+    for (Eigen::Index r = 0; r < 12; ++r) {
+      b(r) = gaussian.normal();
+      for (Eigen::Index c = 0; c < n; ++c) A(r, c) = gaussian.normal();
+    }
+    const Eigen::VectorXd x = solve_nnls(A, b);
+    CAPTURE(trial);
+    CHECK((x.array() >= 0.0).all());
+    // Both are least-squares solves on the same subset: equal to rounding (1e-10 relative).
+    CHECK((A * x - b).squaredNorm() == doctest::Approx(brute_force_nnls_rss(A, b)).epsilon(1e-10));
+  }
+}
+
+TEST_CASE("prony fit: exact two-term series is recovered to solver precision") {
+  const Series s = prony_series(0.6, {0.15, 0.25}, {0.2, 3.0}, 0.01, 5.0, 0.0, 1);
+  const PronyFit fit = fit_prony(s.t, s.y, options_for(s, 2));
+  REQUIRE(fit.ok);
+  // The simplex stops at 1e-6 in the reparametrized times; 1e-5 relative leaves room for it.
+  CHECK(fit.tau[0] == doctest::Approx(0.2).epsilon(1e-5));
+  CHECK(fit.tau[1] == doctest::Approx(3.0).epsilon(1e-5));
+  CHECK(fit.einf == doctest::Approx(0.6).epsilon(1e-5));
+  CHECK(fit.amplitude[0] == doctest::Approx(0.15).epsilon(1e-5));
+  CHECK(fit.amplitude[1] == doctest::Approx(0.25).epsilon(1e-5));
+  CHECK(fit.rms < 1e-7);
+}
+
+TEST_CASE("prony fit: taus and einf within 2 % at 0.5 % noise, well separated taus") {
+  // How well a 5 s record pins tau_slow = 3 s is an information limit, not a solver choice:
+  // at 100 Hz the linearized standard error of tau_slow is ~3 % (checked below against the
+  // scatter over seeds), so 2 % holds only with denser sampling. At 2 kHz (CFM force sensors
+  // sample at kHz rates) it is ~0.65 %, and 2 % is 3 standard errors.
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const Series s = prony_series(0.5, {0.2, 0.3}, {0.2, 3.0}, 0.0005, 5.0, 0.005, seed);
+    const PronyFit fit = fit_prony(s.t, s.y, options_for(s, 2));
+    CAPTURE(seed);
+    CAPTURE(fit.reason);
+    REQUIRE(fit.ok);
+    CHECK(fit.tau[0] == doctest::Approx(0.2).epsilon(0.02));
+    CHECK(fit.tau[1] == doctest::Approx(3.0).epsilon(0.02));
+    CHECK(fit.einf == doctest::Approx(0.5).epsilon(0.02));
+    CHECK(fit.rms == doctest::Approx(0.005).epsilon(0.05));  // the residual is the noise
+  }
+}
+
+TEST_CASE("prony fit: the reported standard error of tau matches the scatter over noise draws") {
+  // 40 noisy copies at 100 Hz: the empirical sd of tau_slow / 3 s - 1 and the mean reported
+  // relative standard error agree within 30 % (the sd of a 40-sample sd is ~11 %).
+  const int draws = 40;
+  double sum = 0.0, squares = 0.0, reported = 0.0;
+  for (int seed = 1; seed <= draws; ++seed) {
+    const Series s = prony_series(0.5, {0.2, 0.3}, {0.2, 3.0}, 0.01, 5.0, 0.005, static_cast<std::uint64_t>(seed));
+    const PronyFit fit = fit_prony(s.t, s.y, options_for(s, 2));
+    const double error = fit.tau[1] / 3.0 - 1.0;
+    sum += error;
+    squares += error * error;
+    reported += fit.tau_relative_se[1];
+  }
+  const double sd = std::sqrt(squares / draws - (sum / draws) * (sum / draws));
+  CHECK(sd == doctest::Approx(reported / draws).epsilon(0.3));
+  CHECK(std::abs(sum / draws) < 3.0 * sd / std::sqrt(draws));  // no bias beyond the scatter
+}
+
+TEST_CASE("prony fit: AIC prefers the number of terms the data hold") {
+  const Series two = prony_series(0.65, {0.15, 0.20}, {0.2, 3.0}, 0.01, 5.0, 0.005, 3);
+  const PronyFit one_term = fit_prony(two.t, two.y, options_for(two, 1));
+  const PronyFit two_terms = fit_prony(two.t, two.y, options_for(two, 2));
+  const PronyFit three_terms = fit_prony(two.t, two.y, options_for(two, 3));
+  CHECK(two_terms.aic < one_term.aic - 100.0);
+  // A third term cannot lower the residual by more than noise: AIC does not improve by more
+  // than its 2-per-parameter penalty, and the fit says why the third term is not usable.
+  CHECK(three_terms.aic > two_terms.aic - 4.0);
+  CHECK_FALSE(three_terms.ok);
+}
+
+TEST_CASE("prony fit: ill-conditioned cases are reported, not hidden") {
+  SUBCASE("taus within 20 % of each other") {
+    const Series s = prony_series(0.6, {0.2, 0.2}, {1.0, 1.1}, 0.01, 5.0, 0.005, 5);
+    const PronyFit fit = fit_prony(s.t, s.y, options_for(s, 2));
+    CAPTURE(fit.reason);
+    CHECK_FALSE(fit.ok);
+    CHECK_FALSE(fit.reason.empty());
+  }
+  SUBCASE("fast tau below the sampling interval") {
+    const Series s = prony_series(0.6, {0.2, 0.2}, {0.002, 2.0}, 0.01, 5.0, 0.005, 6);
+    const PronyFit fit = fit_prony(s.t, s.y, options_for(s, 2));
+    CAPTURE(fit.reason);
+    CHECK_FALSE(fit.ok);
+    CHECK(fit.reason.find("tau_fast") != std::string::npos);
+  }
+  SUBCASE("slow tau far beyond the record") {
+    const Series s = prony_series(0.5, {0.2, 0.3}, {0.3, 60.0}, 0.01, 5.0, 0.005, 7);
+    const PronyFit fit = fit_prony(s.t, s.y, options_for(s, 2));
+    CAPTURE(fit.reason);
+    CHECK_FALSE(fit.ok);
+    CHECK(fit.reason.find("tau_slow") != std::string::npos);
+  }
+}
+
+TEST_CASE("prony fit: rejects inconsistent options") {
+  const Series s = prony_series(0.6, {0.4}, {1.0}, 0.01, 5.0, 0.0, 1);
+  PronyFitOptions options = options_for(s, 4);
+  CHECK_THROWS_AS(fit_prony(s.t, s.y, options), InputError);
+  options = options_for(s, 2);
+  options.tau_max = options.tau_min;
+  CHECK_THROWS_AS(fit_prony(s.t, s.y, options), InputError);
+  CHECK_THROWS_AS(fit_prony(std::span(s.t).first(5), std::span(s.y).first(5), options_for(s, 2)), InputError);
+}
