@@ -1,0 +1,57 @@
+#include "growthuq/growth/kappa.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "finite_checks.hpp"
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+
+namespace growthuq {
+namespace {
+
+// Messages give rates in um/s, the unit of the distribution files.
+std::string in_um_per_s(double rate) {
+  return std::isfinite(rate) ? format_double(rate * 1e6) + " um/s" : format_double(rate);
+}
+
+}  // namespace
+
+double median_growth_rate(std::span<const double> v, std::span<const SampleStatus> status) {
+  std::vector<double> growing;
+  for (std::size_t i = 0; i < v.size() && i < status.size(); ++i) {
+    if (status[i] == SampleStatus::ok) growing.push_back(v[i]);
+  }
+  if (growing.empty()) return std::numeric_limits<double>::quiet_NaN();
+  const std::size_t middle = growing.size() / 2;
+  std::nth_element(growing.begin(), growing.begin() + static_cast<std::ptrdiff_t>(middle), growing.end());
+  const double upper = growing[middle];
+  if (growing.size() % 2 == 1) return upper;
+  const double lower = *std::max_element(growing.begin(), growing.begin() + static_cast<std::ptrdiff_t>(middle));
+  return lower + 0.5 * (upper - lower);
+}
+
+double calibrate_kappa(std::string_view reference_line, double experimental_median,
+                       double predicted_median_at_unit_kappa) {
+  const std::string location = "reference line '" + std::string(reference_line) + "'";
+  if (!growth_detail::positive_finite(experimental_median)) {
+    throw_bad_value(location, "experimental median growth rate", in_um_per_s(experimental_median),
+                    "a positive finite growth rate");
+  }
+  if (!growth_detail::positive_finite(predicted_median_at_unit_kappa)) {
+    throw_bad_value(location, "predicted median growth rate (kappa = 1)",
+                    in_um_per_s(predicted_median_at_unit_kappa),
+                    "a positive finite growth rate (nan: no sample of the line grows)");
+  }
+  const double kappa = experimental_median / predicted_median_at_unit_kappa;
+  if (!growth_detail::positive_normal(kappa)) {
+    throw_bad_value(location, "kappa", format_double(kappa),
+                    "a ratio of experimental to predicted median within double range; the two "
+                    "medians differ by more than 300 orders of magnitude (units?)");
+  }
+  return kappa;
+}
+
+}  // namespace growthuq
