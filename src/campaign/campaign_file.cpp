@@ -1,0 +1,319 @@
+#include "growthuq/campaign/campaign_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+#include "growthuq/core/units.hpp"
+#include "growthuq/io/ini.hpp"
+#include "io/read_text_file.hpp"
+
+namespace growthuq {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> split_list(std::string_view text) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string_view item = trim(text.substr(start, comma - start));
+    if (!item.empty()) items.emplace_back(item);
+    start = comma + 1;
+  }
+  return items;
+}
+
+// Reads the keys of one section, remembering which were used so that any other key is an
+// error ("unknown key") rather than silently ignored.
+class SectionReader {
+ public:
+  SectionReader(const IniDocument& document, const IniSection& section)
+      : document_(document), section_(section) {}
+
+  const IniEntry* optional(std::string_view key) {
+    used_.emplace_back(key);
+    return section_.find(key);
+  }
+
+  const IniEntry& required(std::string_view key) {
+    if (const IniEntry* entry = optional(key)) return *entry;
+    throw InputError(document_.location(section_.line),
+                     "[" + section_.name + "] lacks the required key '" + std::string(key) + "'");
+  }
+
+  std::string location(const IniEntry& entry) const { return document_.location(entry.line); }
+
+  double number(const IniEntry& entry, double minimum, double maximum, std::string_view expected) const {
+    const double value = parse_double(entry.value, location(entry), entry.key);
+    if (!(value >= minimum && value <= maximum)) throw_bad_value(location(entry), entry.key, entry.value, expected);
+    return value;
+  }
+
+  void reject_unknown_keys(std::string_view allowed) const {
+    for (const IniEntry& entry : section_.entries) {
+      if (std::find(used_.begin(), used_.end(), entry.key) == used_.end()) {
+        throw InputError(location(entry), "unknown key '" + entry.key + "' in [" + section_.name +
+                                              "] (allowed: " + std::string(allowed) + ")");
+      }
+    }
+  }
+
+ private:
+  const IniDocument& document_;
+  const IniSection& section_;
+  std::vector<std::string> used_;
+};
+
+// "lo:hi" in `unit_to_si` units -> DrawRange in SI.
+DrawRange parse_range(const SectionReader& reader, const IniEntry& entry, double unit_to_si) {
+  const std::size_t colon = entry.value.find(':');
+  const auto low = colon == std::string::npos ? std::nullopt : try_parse_double(entry.value.substr(0, colon));
+  const auto high = colon == std::string::npos ? std::nullopt : try_parse_double(entry.value.substr(colon + 1));
+  if (!low || !high || !(*low > 0.0) || !(*high > *low)) {
+    throw_bad_value(reader.location(entry), entry.key, entry.value, "a range 'low:high' with 0 < low < high");
+  }
+  return {*low * unit_to_si, *high * unit_to_si};
+}
+
+std::string resolve(const std::string& campaign_path, const std::string& relative) {
+  const fs::path path(relative);
+  if (path.is_absolute()) return path.string();
+  return (fs::path(campaign_path).parent_path() / path).lexically_normal().string();
+}
+
+void require_readable_file(const SectionReader& reader, const IniEntry& entry, const std::string& path) {
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) {
+    throw_bad_value(reader.location(entry), entry.key, entry.value,
+                    "an existing file (looked for " + path + ", relative paths start at the campaign file's folder)");
+  }
+}
+
+void read_campaign_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
+  SectionReader reader(document, section);
+  campaign.name = reader.required("name").value;
+  const IniEntry& seed = reader.required("seed");
+  campaign.seed = parse_count(seed.value, reader.location(seed), seed.key);
+  const IniEntry& samples = reader.required("samples");
+  campaign.samples = parse_count(samples.value, reader.location(samples), samples.key, 1, 4294967295ULL);
+  const IniEntry& outputs = reader.required("outputs");
+  campaign.outputs = split_list(outputs.value);
+  if (campaign.outputs.empty()) throw_bad_value(reader.location(outputs), outputs.key, outputs.value, "a list such as 'p, E, eta, v'");
+  for (const std::string& output : campaign.outputs) {
+    if (find_quantity(output) == nullptr) {
+      std::string known;
+      for (const Quantity& quantity : known_quantities()) known += (known.empty() ? "" : ", ") + std::string(quantity.name);
+      throw_bad_value(reader.location(outputs), outputs.key, output, "quantities among " + known);
+    }
+  }
+  campaign.output_dir = reader.required("output_dir").value;
+  if (const IniEntry* formats = reader.optional("formats")) {
+    campaign.formats = parse_formats(formats->value, reader.location(*formats), formats->key);
+  }
+  if (const IniEntry* chunk = reader.optional("chunk_size")) {
+    campaign.chunk_size = parse_count(chunk->value, reader.location(*chunk), chunk->key, 1, 10000000);
+  }
+  if (const IniEntry* position = reader.optional("stratum_position")) {
+    if (position->value == "random") {
+      campaign.stratum_position = StratumPosition::random;
+    } else if (position->value == "centred" || position->value == "centered") {
+      campaign.stratum_position = StratumPosition::centred;
+    } else {
+      throw_bad_value(reader.location(*position), position->key, position->value, "random or centred");
+    }
+  }
+  if (const IniEntry* fidelity = reader.optional("fidelity")) {
+    if (fidelity->value != "thin_shell") throw_bad_value(reader.location(*fidelity), fidelity->key, fidelity->value, "thin_shell (the only model today)");
+  }
+  reader.reject_unknown_keys("name, seed, samples, outputs, output_dir, formats, chunk_size, stratum_position, fidelity");
+}
+
+void read_instrument_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
+  SectionReader reader(document, section);
+  const IniEntry& rho = reader.required("probe_radius_um");
+  campaign.instrument.probe_radius = reader.number(rho, 1e-3, 1e3, "a probe radius in um, in (0, 1000]") * 1e-6;
+  if (!(campaign.instrument.probe_radius > 0.0)) throw_bad_value(reader.location(rho), rho.key, rho.value, "a positive radius in um");
+  if (const IniEntry* nu = reader.optional("poisson_ratio")) {
+    campaign.instrument.poisson_ratio = reader.number(*nu, 0.0, std::nextafter(1.0, 0.0), "a Poisson ratio in [0, 1)");
+  }
+  if (const IniEntry* k_sys = reader.optional("sensor_stiffness_N_per_m")) {
+    campaign.instrument.sensor_stiffness =
+        k_sys->value == "inf" ? std::numeric_limits<double>::infinity()
+                              : reader.number(*k_sys, 1e-12, 1e12, "a stiffness in N/m > 0, or inf");
+  }
+  reader.reject_unknown_keys("probe_radius_um, poisson_ratio, sensor_stiffness_N_per_m");
+  validate(campaign.instrument, reader.location(rho));
+}
+
+void read_growth_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
+  SectionReader reader(document, section);
+  if (const IniEntry* p0 = reader.optional("yield_pressure_MPa")) {
+    campaign.yield_pressure = reader.number(*p0, 0.0, 100.0, "a yield pressure in MPa in [0, 100]") * 1e6;
+  }
+  if (const IniEntry* reference = reader.optional("reference_line")) campaign.reference_line = reference->value;
+  reader.reject_unknown_keys("yield_pressure_MPa, reference_line");
+}
+
+void read_physics_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
+  SectionReader reader(document, section);
+  MechanicalDrawOptions& draw = campaign.physics_correlation;
+  if (const IniEntry* p = reader.optional("p_MPa")) draw.p = parse_range(reader, *p, 1e6);
+  if (const IniEntry* E = reader.optional("E_MPa")) draw.E = parse_range(reader, *E, 1e6);
+  if (const IniEntry* h = reader.optional("h_nm")) draw.h = parse_range(reader, *h, 1e-9);
+  if (const IniEntry* d0 = reader.optional("d0_um")) draw.d0 = parse_range(reader, *d0, 1e-6);
+  if (const IniEntry* scale = reader.optional("scale")) {
+    if (scale->value == "uniform") {
+      draw.scale = DrawScale::uniform;
+    } else if (scale->value == "log_uniform") {
+      draw.scale = DrawScale::log_uniform;
+    } else {
+      throw_bad_value(reader.location(*scale), scale->key, scale->value, "uniform or log_uniform");
+    }
+  }
+  if (const IniEntry* samples = reader.optional("samples")) {
+    draw.samples = parse_count(samples->value, reader.location(*samples), samples->key, 100, 100000000);
+  }
+  reader.reject_unknown_keys("p_MPa, E_MPa, h_nm, d0_um, scale, samples");
+  validate(draw, document.location(section.line));
+}
+
+CampaignLine read_line_section(const IniDocument& document, const IniSection& section) {
+  SectionReader reader(document, section);
+  CampaignLine line;
+  line.name = std::string(trim(std::string_view(section.name).substr(5)));
+  line.line = section.line;
+  if (line.name.empty() || line.name.find_first_of(" \t,/") != std::string::npos) {
+    throw InputError(document.location(section.line),
+                     "[" + section.name + "]: expected [line NAME] with a name without blanks, commas or slashes");
+  }
+  const IniEntry& distributions = reader.required("distributions");
+  line.distributions_path = resolve(document.path, distributions.value);
+  require_readable_file(reader, distributions, line.distributions_path);
+  if (const IniEntry* correlation = reader.optional("rank_correlation")) {
+    if (correlation->value == "none") {
+      line.correlation = CorrelationSource::none;
+    } else if (correlation->value == "physics") {
+      line.correlation = CorrelationSource::physics;
+    } else {
+      line.correlation = CorrelationSource::file;
+      line.correlation_path = resolve(document.path, correlation->value);
+      require_readable_file(reader, *correlation, line.correlation_path);
+    }
+  }
+  reader.reject_unknown_keys("distributions, rank_correlation");
+  return line;
+}
+
+}  // namespace
+
+const CampaignLine* Campaign::find_line(std::string_view line_name) const {
+  for (const CampaignLine& line : lines) {
+    if (line.name == line_name) return &line;
+  }
+  return nullptr;
+}
+
+OutputFormats parse_formats(std::string_view text, std::string_view location, std::string_view key) {
+  OutputFormats formats{false, false};
+  const auto items = split_list(text);
+  for (const std::string& item : items) {
+    if (item == "csv") {
+      formats.csv = true;
+    } else if (item == "hdf5") {
+      formats.hdf5 = true;
+    } else {
+      throw_bad_value(location, key, text, "csv, hdf5 or csv,hdf5");
+    }
+  }
+  if (items.empty()) throw_bad_value(location, key, text, "csv, hdf5 or csv,hdf5");
+  return formats;
+}
+
+Campaign parse_campaign(const std::string& text, const std::string& path) {
+  const IniDocument document = parse_ini(text, path);
+  Campaign campaign;
+  campaign.path = path;
+  campaign.text = text;
+  bool has_campaign = false;
+  bool has_instrument = false;
+  for (const IniSection& section : document.sections) {
+    if (section.name == "campaign") {
+      read_campaign_section(document, section, campaign);
+      has_campaign = true;
+    } else if (section.name == "instrument") {
+      read_instrument_section(document, section, campaign);
+      has_instrument = true;
+    } else if (section.name == "growth") {
+      read_growth_section(document, section, campaign);
+    } else if (section.name == "physics_correlation") {
+      read_physics_section(document, section, campaign);
+    } else if (section.name.starts_with("line ")) {
+      campaign.lines.push_back(read_line_section(document, section));
+    } else {
+      throw InputError(document.location(section.line),
+                       "unknown section [" + section.name +
+                           "] (expected [campaign], [instrument], [growth], [physics_correlation] or [line NAME])");
+    }
+  }
+  if (!has_campaign) throw InputError(path, "no [campaign] section (name, seed, samples, outputs, output_dir)");
+  if (!has_instrument) throw InputError(path, "no [instrument] section: probe_radius_um is required (it dominates turgor)");
+  if (campaign.lines.empty()) throw InputError(path, "no [line NAME] section: a campaign needs at least one plant line");
+  for (std::size_t i = 0; i < campaign.lines.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (campaign.lines[i].name == campaign.lines[j].name) {
+        throw InputError(document.location(campaign.lines[i].line), "line '" + campaign.lines[i].name + "' repeats");
+      }
+    }
+  }
+  const bool wants_growth = std::find(campaign.outputs.begin(), campaign.outputs.end(), "v") != campaign.outputs.end();
+  if (wants_growth && campaign.reference_line.empty()) {
+    throw InputError(path, "output v needs [growth] reference_line: the line whose experimental growth rate calibrates kappa");
+  }
+  if (!campaign.reference_line.empty() && campaign.find_line(campaign.reference_line) == nullptr) {
+    throw InputError(path, "[growth] reference_line = '" + campaign.reference_line + "': expected one of the campaign's lines");
+  }
+  return campaign;
+}
+
+Campaign read_campaign(const std::string& path) {
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) throw InputError(path, "no such campaign file");
+  return parse_campaign(detail::read_text_file(path), path);
+}
+
+void apply_overrides(Campaign& campaign, const CampaignOverrides& overrides) {
+  if (overrides.samples) {
+    if (*overrides.samples < 1 || *overrides.samples > 4294967295ULL) {
+      throw_bad_value("command line", "--samples", std::to_string(*overrides.samples), "a whole number from 1 to 4294967295");
+    }
+    campaign.samples = *overrides.samples;
+  }
+  if (overrides.seed) campaign.seed = *overrides.seed;
+  if (overrides.output_dir) campaign.output_dir = *overrides.output_dir;
+  if (overrides.formats) campaign.formats = parse_formats(*overrides.formats, "command line", "--formats");
+  if (overrides.lines) {
+    std::vector<CampaignLine> selected;
+    for (const std::string& name : split_list(*overrides.lines)) {
+      const CampaignLine* line = campaign.find_line(name);
+      if (line == nullptr) {
+        std::string known;
+        for (const CampaignLine& candidate : campaign.lines) known += (known.empty() ? "" : ", ") + candidate.name;
+        throw_bad_value("command line", "--lines", name, "lines of " + campaign.path + ": " + known);
+      }
+      selected.push_back(*line);
+    }
+    if (selected.empty()) throw_bad_value("command line", "--lines", *overrides.lines, "a comma-separated list of line names");
+    campaign.lines = std::move(selected);
+    if (!campaign.reference_line.empty() && campaign.find_line(campaign.reference_line) == nullptr) {
+      throw_bad_value("command line", "--lines", *overrides.lines,
+                      "a selection that keeps the reference line '" + campaign.reference_line + "' (it calibrates kappa)");
+    }
+  }
+}
+
+}  // namespace growthuq

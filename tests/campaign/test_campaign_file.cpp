@@ -1,0 +1,107 @@
+// Campaign files: the values read, relative paths, overrides, and one clear error per mistake.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "growthuq/campaign/campaign_file.hpp"
+#include "growthuq/core/error.hpp"
+
+using namespace growthuq;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A folder with a campaign's neighbours: two line files and a matrix file.
+struct CampaignFolder {
+  fs::path root = fs::temp_directory_path() / "growthuq_test_campaign";
+  CampaignFolder() {
+    fs::remove_all(root);
+    fs::create_directories(root / "lines");
+    for (const char* name : {"lines/wt.ini", "lines/m1.ini", "lines/matrix.csv"}) std::ofstream(root / name) << "x\n";
+  }
+  ~CampaignFolder() { fs::remove_all(root); }
+  std::string path() const { return (root / "c.ini").string(); }
+};
+
+const std::string valid =
+    "[campaign]\nname = test\nseed = 7\nsamples = 300\noutputs = p, E, eta, v\noutput_dir = out/test\n"
+    "[instrument]\nprobe_radius_um = 0.5\n"
+    "[growth]\nyield_pressure_MPa = 0.1\nreference_line = wt\n"
+    "[line wt]\ndistributions = lines/wt.ini\nrank_correlation = physics\n"
+    "[line m1]\ndistributions = lines/m1.ini\nrank_correlation = lines/matrix.csv\n";
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  return text.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+TEST_CASE("a valid campaign is read with SI values and resolved paths") {
+  const CampaignFolder folder;
+  const Campaign campaign = parse_campaign(valid, folder.path());
+  CHECK(campaign.name == "test");
+  CHECK(campaign.seed == 7);
+  CHECK(campaign.samples == 300);
+  CHECK(campaign.outputs == std::vector<std::string>{"p", "E", "eta", "v"});
+  CHECK(campaign.instrument.probe_radius == doctest::Approx(0.5e-6).epsilon(1e-15));
+  CHECK(campaign.instrument.poisson_ratio == 0.2);
+  CHECK(std::isinf(campaign.instrument.sensor_stiffness));
+  CHECK(campaign.yield_pressure == doctest::Approx(1e5).epsilon(1e-15));
+  CHECK(campaign.formats.csv);
+  CHECK(campaign.formats.hdf5);
+  REQUIRE(campaign.lines.size() == 2);
+  CHECK(campaign.lines[0].correlation == CorrelationSource::physics);
+  CHECK(campaign.lines[1].correlation == CorrelationSource::file);
+  CHECK(fs::equivalent(campaign.lines[1].correlation_path, folder.root / "lines/matrix.csv"));
+  CHECK(fs::equivalent(campaign.lines[0].distributions_path, folder.root / "lines/wt.ini"));
+}
+
+TEST_CASE("command-line overrides") {
+  const CampaignFolder folder;
+  Campaign campaign = parse_campaign(valid, folder.path());
+  apply_overrides(campaign, {.samples = 50, .seed = 9, .output_dir = "elsewhere", .lines = "wt", .formats = "hdf5"});
+  CHECK(campaign.samples == 50);
+  CHECK(campaign.seed == 9);
+  CHECK(campaign.output_dir == "elsewhere");
+  REQUIRE(campaign.lines.size() == 1);
+  CHECK(campaign.lines[0].name == "wt");
+  CHECK_FALSE(campaign.formats.csv);
+  CHECK(campaign.formats.hdf5);
+  Campaign other = parse_campaign(valid, folder.path());
+  CHECK_THROWS_WITH_AS(apply_overrides(other, {.lines = "m1"}),
+                       "command line: --lines = 'm1': expected a selection that keeps the reference line 'wt' (it calibrates kappa)",
+                       InputError);
+  CHECK_THROWS_AS(apply_overrides(other, {.lines = "nope"}), InputError);
+  CHECK_THROWS_AS(apply_overrides(other, {.formats = "xlsx"}), InputError);
+}
+
+TEST_CASE("each mistake is one error naming file and line") {
+  const CampaignFolder folder;
+  const std::string file = folder.path();
+  auto error_of = [&](const std::string& text) -> std::string {
+    try {
+      parse_campaign(text, file);
+    } catch (const InputError& error) {
+      return error.what();
+    }
+    return "no error";
+  };
+  CHECK(error_of(replaced(valid, "seed = 7", "seed = -7")) == file + ":3: seed = '-7': expected a whole number from 0 to 18446744073709551615");
+  CHECK(error_of(replaced(valid, "samples = 300", "samples = 0")) == file + ":4: samples = '0': expected a whole number from 1 to 4294967295");
+  CHECK(error_of(replaced(valid, "outputs = p, E, eta, v", "outputs = p, turgor")).starts_with(file + ":5: outputs = 'turgor': expected quantities among k, h"));
+  CHECK(error_of(replaced(valid, "probe_radius_um = 0.5", "probe_radius_um = -1")) == file + ":8: probe_radius_um = '-1': expected a probe radius in um, in (0, 1000]");
+  CHECK(error_of(replaced(valid, "probe_radius_um = 0.5", "probe_radius = 0.5")) == file + ":7: [instrument] lacks the required key 'probe_radius_um'");
+  CHECK(error_of(replaced(valid, "yield_pressure_MPa = 0.1", "yield_presure_MPa = 0.1")) == file + ":10: unknown key 'yield_presure_MPa' in [growth] (allowed: yield_pressure_MPa, reference_line)");
+  CHECK(error_of(replaced(valid, "lines/m1.ini", "lines/missing.ini")).starts_with(file + ":16: distributions = 'lines/missing.ini': expected an existing file"));
+  CHECK(error_of(replaced(valid, "reference_line = wt", "reference_line = col0")) == file + ": [growth] reference_line = 'col0': expected one of the campaign's lines");
+  CHECK(error_of(replaced(valid, "[line m1]", "[line  wt]")) == file + ":15: line 'wt' repeats");
+  CHECK(error_of(replaced(valid, "[growth]", "[grow]")) == file + ":9: unknown section [grow] (expected [campaign], [instrument], [growth], [physics_correlation] or [line NAME])");
+  CHECK(error_of(replaced(valid, "reference_line = wt\n", "")) == file + ": output v needs [growth] reference_line: the line whose experimental growth rate calibrates kappa");
+  CHECK(error_of(replaced(valid, "[instrument]\nprobe_radius_um = 0.5\n", "")) == file + ": no [instrument] section: probe_radius_um is required (it dominates turgor)");
+  CHECK(error_of(valid + "[physics_correlation]\np_MPa = 0.8:0.1\n") == file + ":19: p_MPa = '0.8:0.1': expected a range 'low:high' with 0 < low < high");
+  CHECK(error_of(replaced(valid, "output_dir = out/test", "output_dir = out/test\nformats = pdf")) == file + ":7: formats = 'pdf': expected csv, hdf5 or csv,hdf5");
+}
