@@ -49,7 +49,10 @@ int main(int argc, char** argv) {
     try {
       return command.run(growthuq::cli::Arguments(argv + 2, argv + argc));
     } catch (const growthuq::InputError& error) {
-      std::cerr << "growthuq " << name << ": error: " << error.what() << "\n";
+      // Errors located at the command line itself carry "growthuq <name>" as their location;
+      // print it once.
+      const bool at_command_line = error.location() == "growthuq " + name;
+      std::cerr << "growthuq " << name << ": error: " << (at_command_line ? error.problem() : error.what()) << "\n";
       return 2;
     } catch (const std::exception& error) {
       std::cerr << "growthuq " << name << ": internal error: " << error.what() << "\n";
