@@ -1,0 +1,46 @@
+// Per-line, per-quantity summaries of a campaign (the rows of summary.csv and results.h5):
+// quantiles, mean and standard deviation, and a distribution-free 95 % confidence interval of
+// the median from order statistics (Conover 1999, "Practical Nonparametric Statistics", 3.2).
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "growthuq/campaign/line_result.hpp"
+#include "growthuq/evaluation/sample_status.hpp"
+
+namespace growthuq {
+
+// Order-statistic ranks (1-based) of a confidence interval of the median: with B ~ binomial(n,
+// 1/2) the number of samples below the true median of a continuous law,
+// P(X(lower) <= median <= X(upper)) = P(lower <= B <= upper - 1) = 1 - 2 P(B <= lower - 1) for
+// the symmetric choice upper = n + 1 - lower. `lower` is the largest rank whose coverage is still
+// >= level. When even the full range [X(1), X(n)] (coverage 1 - 2^(1-n)) falls short, i.e. n <= 5
+// for 95 %, `reached` is false and lower = 1, upper = n (n = 0 gives 0, 0).
+struct MedianConfidenceRanks {
+  std::size_t lower = 0;
+  std::size_t upper = 0;
+  double coverage = 0;  // exact coverage of [X(lower), X(upper)] for continuous laws
+  bool reached = false;
+};
+
+// level in (0, 1); std::invalid_argument otherwise (a programming error, not user input).
+MedianConfidenceRanks median_confidence_ranks(std::size_t n, double level = 0.95);
+
+// Whether a sample with `status` enters the statistics of `quantity`: status ok, and for the
+// growth rate v also no_growth (a tube below the yield pressure is a valid prediction of 0).
+bool counts_in_summary(std::string_view quantity, SampleStatus status);
+
+// The summary of one column over the samples that count (above). Quantiles use numpy's
+// "linear" rule (sorted_quantile); sd divides by n - 1. A counted sample whose value is not
+// finite (an evaluator bug: flagged samples carry NaN) is left out and counted in n_flagged.
+// Cells that are undefined are NaN and writers print them as empty cells:
+//   n = 0: every statistic;  n = 1: sd;  n <= 5: median_ci_low/high (95 % not reachable, see
+//   MedianConfidenceRanks; reporting the range as a "95 %" interval would overstate it).
+// status.size() must equal column.values.size() (std::invalid_argument otherwise).
+QuantitySummary summarize_quantity(const std::string& line, const ResultColumn& column,
+                                   std::span<const SampleStatus> status);
+
+}  // namespace growthuq

@@ -1,0 +1,347 @@
+// results.h5: every dataset and attribute read back with the HDF5 C++ API and compared exactly,
+// the same file checked from Python with h5py (the users' reader), and the file's life cycle
+// (.partial while writing, removed when abandoned, existing results never overwritten silently).
+#include <doctest/doctest.h>
+
+#include <H5Cpp.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/units.hpp"
+#include "growthuq/io/results_h5.hpp"
+#include "growthuq/stats/quantity_summary.hpp"
+
+using namespace growthuq;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double missing = std::numeric_limits<double>::quiet_NaN();
+
+// A directory of its own per test process: several builds may run their tests at once.
+struct Scratch {
+  fs::path root;
+  explicit Scratch(const std::string& name)
+      : root(fs::temp_directory_path() / ("growthuq_test_results_h5_" + name + "_" + std::to_string(::getpid()))) {
+    fs::remove_all(root);
+    fs::create_directories(root);
+  }
+  ~Scratch() { fs::remove_all(root); }
+  std::string path(const std::string& file) const { return (root / file).string(); }
+};
+
+ResultColumn column_of(const char* quantity, const char* unit, bool is_input, std::vector<double> values) {
+  ResultColumn column;
+  column.quantity = quantity;
+  column.unit = &find_unit(unit, "test", "unit");
+  column.is_input = is_input;
+  column.values = std::move(values);
+  return column;
+}
+
+// The data the Python check (check_results_h5.py) expects too: keep them in step.
+LineResult wild_type() {
+  LineResult line;
+  line.name = "wild_type";
+  line.columns = {column_of("k", "N/m", true, {2.87, 3.1, 2.2, 4.05, 1.9, 2.5}),
+                  column_of("d0", "um", true, {5.35, 5.9, 4.8, 6.2, 5.0, 5.1}),
+                  column_of("p", "MPa", false, {0.31, missing, 0.22, 0.45, 0.18, 0.27}),
+                  column_of("v", "um/s", false, {0.028, missing, 0.0, 0.041, 0.012, 0.02})};
+  line.status = {SampleStatus::ok, SampleStatus::burst, SampleStatus::no_growth,
+                 SampleStatus::ok, SampleStatus::ok,    SampleStatus::ok};
+  line.correlated_inputs = {"k", "d0"};
+  line.target_spearman.resize(2, 2);
+  line.target_spearman << 1, 0.3, 0.3, 1;
+  line.achieved_spearman.resize(2, 2);
+  line.achieved_spearman << 1, 0.2857142857142857, 0.2857142857142857, 1;
+  return line;
+}
+
+LineResult xxt1_xxt2() {
+  LineResult line;
+  line.name = "xxt1 xxt2";
+  line.columns = {column_of("k", "N/m", true, {1.5, 2.5}), column_of("p", "MPa", false, {missing, missing})};
+  line.status = {SampleStatus::lambda_not_above_one, SampleStatus::invalid_input};
+  line.correlated_inputs = {"k"};
+  line.achieved_spearman = Eigen::MatrixXd::Identity(1, 1);
+  return line;
+}
+
+std::vector<QuantitySummary> summaries_of(const LineResult& line) {
+  std::vector<QuantitySummary> summaries;
+  for (const ResultColumn& column : line.columns) summaries.push_back(summarize_quantity(line.name, column, line.status));
+  return summaries;
+}
+
+CampaignMetadata metadata() {
+  CampaignMetadata m;
+  m.campaign_text = "[campaign]\nsamples = 6\nseed = 42\n# \xc2\xb5m and a newline\n";
+  m.campaign_path = "campaigns/test.ini";
+  m.command_line = "growthuq run campaigns/test.ini --out results";
+  m.engine_version = "0.1.0";
+  m.seed = 18446744073709551557ULL;  // the largest 64-bit prime: every bit of the seed survives
+  m.kappa = 0.8125;
+  m.samples_per_line = 6;
+  return m;
+}
+
+void write_campaign(const std::string& path, Overwrite overwrite = Overwrite::refuse) {
+  ResultsH5Writer writer(path, overwrite);
+  for (const LineResult& line : {wild_type(), xxt1_xxt2()}) writer.write_line(line, summaries_of(line), analyze_line(line));
+  writer.finish(metadata());
+}
+
+// Reading back through the C++ API.
+std::string read_string(const H5::H5Object& object, const std::string& name) {
+  const H5::Attribute attribute = object.openAttribute(name);
+  std::string value;
+  attribute.read(attribute.getStrType(), value);
+  return value;
+}
+
+std::vector<std::string> read_strings(const H5::H5Object& object, const std::string& name) {
+  const H5::Attribute attribute = object.openAttribute(name);
+  const H5::DataSpace space = attribute.getSpace();
+  std::vector<char*> pointers(static_cast<std::size_t>(space.getSimpleExtentNpoints()));
+  const H5::StrType type = attribute.getStrType();
+  CHECK(type.isVariableStr());
+  CHECK(type.getCset() == H5T_CSET_UTF8);
+  if (pointers.empty()) return {};
+  attribute.read(type, pointers.data());
+  std::vector<std::string> values(pointers.begin(), pointers.end());
+  H5Dvlen_reclaim(type.getId(), space.getId(), H5P_DEFAULT, pointers.data());
+  return values;
+}
+
+template <typename T>
+T read_scalar(const H5::H5Object& object, const std::string& name, const H5::PredType& type) {
+  T value{};
+  object.openAttribute(name).read(type, &value);
+  return value;
+}
+
+std::vector<double> read_doubles(const H5::DataSet& dataset, std::vector<hsize_t>* dims = nullptr) {
+  const H5::DataSpace space = dataset.getSpace();
+  std::vector<hsize_t> shape(static_cast<std::size_t>(space.getSimpleExtentNdims()));
+  space.getSimpleExtentDims(shape.data());
+  if (dims != nullptr) *dims = shape;
+  CHECK(dataset.getDataType() == H5::PredType::IEEE_F64LE);
+  std::vector<double> values(static_cast<std::size_t>(space.getSimpleExtentNpoints()));
+  if (!values.empty()) dataset.read(values.data(), H5::PredType::NATIVE_DOUBLE);
+  return values;
+}
+
+// Bitwise equality, so NaN cells compare equal to NaN cells.
+bool same(double a, double b) { return (std::isnan(a) && std::isnan(b)) || a == b; }
+
+void check_same(const std::vector<double>& actual, const std::vector<double>& expected) {
+  REQUIRE(actual.size() == expected.size());
+  for (std::size_t i = 0; i < actual.size(); ++i) {
+    CAPTURE(i);
+    CHECK(same(actual[i], expected[i]));
+  }
+}
+
+// Row-major values of an Eigen matrix, as the file stores them.
+std::vector<double> row_major(const Eigen::MatrixXd& matrix) {
+  std::vector<double> values;
+  for (Eigen::Index r = 0; r < matrix.rows(); ++r)
+    for (Eigen::Index c = 0; c < matrix.cols(); ++c) values.push_back(matrix(r, c));
+  return values;
+}
+
+struct SummaryRow {
+  char* line;
+  char* quantity;
+  char* unit;
+  std::uint64_t n, n_flagged;
+  double median, q1, q3, iqr, p10, p90, mean, sd, median_ci_low, median_ci_high;
+};
+
+std::vector<QuantitySummary> read_summary(const H5::DataSet& dataset) {
+  const H5::StrType text(H5::PredType::C_S1, H5T_VARIABLE);
+  H5::CompType type(sizeof(SummaryRow));
+  type.insertMember("line", HOFFSET(SummaryRow, line), text);
+  type.insertMember("quantity", HOFFSET(SummaryRow, quantity), text);
+  type.insertMember("unit", HOFFSET(SummaryRow, unit), text);
+  type.insertMember("n", HOFFSET(SummaryRow, n), H5::PredType::NATIVE_UINT64);
+  type.insertMember("n_flagged", HOFFSET(SummaryRow, n_flagged), H5::PredType::NATIVE_UINT64);
+  const char* names[] = {"median", "q1", "q3", "iqr", "p10", "p90", "mean", "sd", "median_ci_low", "median_ci_high"};
+  for (std::size_t i = 0; i < 10; ++i) type.insertMember(names[i], HOFFSET(SummaryRow, median) + i * sizeof(double), H5::PredType::NATIVE_DOUBLE);
+  const H5::DataSpace space = dataset.getSpace();
+  std::vector<SummaryRow> rows(static_cast<std::size_t>(space.getSimpleExtentNpoints()));
+  if (!rows.empty()) dataset.read(rows.data(), type);
+  std::vector<QuantitySummary> result;
+  for (const SummaryRow& row : rows) {
+    result.push_back({row.line, row.quantity, row.unit, row.n, row.n_flagged, row.median, row.q1, row.q3, row.iqr,
+                      row.p10, row.p90, row.mean, row.sd, row.median_ci_low, row.median_ci_high});
+  }
+  if (!rows.empty()) H5Dvlen_reclaim(type.getId(), space.getId(), H5P_DEFAULT, rows.data());
+  return result;
+}
+
+void check_summaries(const std::vector<QuantitySummary>& actual, const std::vector<QuantitySummary>& expected) {
+  REQUIRE(actual.size() == expected.size());
+  for (std::size_t i = 0; i < actual.size(); ++i) {
+    const QuantitySummary &a = actual[i], &e = expected[i];
+    CAPTURE(e.quantity);
+    CHECK(a.line == e.line);
+    CHECK(a.quantity == e.quantity);
+    CHECK(a.unit == e.unit);
+    CHECK(a.n == e.n);
+    CHECK(a.n_flagged == e.n_flagged);
+    check_same({a.median, a.q1, a.q3, a.iqr, a.p10, a.p90, a.mean, a.sd, a.median_ci_low, a.median_ci_high},
+               {e.median, e.q1, e.q3, e.iqr, e.p10, e.p90, e.mean, e.sd, e.median_ci_low, e.median_ci_high});
+  }
+}
+
+void check_line(const H5::H5File& file, const LineResult& line) {
+  CAPTURE(line.name);
+  const H5::Group group = file.openGroup("lines/" + line.name);
+  CHECK(read_scalar<std::uint64_t>(group, "samples", H5::PredType::NATIVE_UINT64) == line.samples());
+  for (const ResultColumn& column : line.columns) {
+    const H5::DataSet dataset = group.openDataSet(column.column_name());
+    check_same(read_doubles(dataset), column.values);
+    CHECK(read_string(dataset, "quantity") == column.quantity);
+    CHECK(read_string(dataset, "unit") == column.unit->symbol);
+    CHECK(read_string(dataset, "role") == (column.is_input ? "input" : "output"));
+  }
+  const H5::DataSet status = group.openDataSet("status");
+  CHECK(status.getDataType() == H5::PredType::STD_U8LE);
+  std::vector<std::uint8_t> codes(line.samples());
+  status.read(codes.data(), H5::PredType::NATIVE_UINT8);
+  for (std::size_t i = 0; i < codes.size(); ++i) CHECK(codes[i] == static_cast<std::uint8_t>(line.status[i]));
+  const std::vector<std::string> names = read_strings(status, "names");
+  REQUIRE(names.size() == 9);
+  for (std::size_t code = 0; code < names.size(); ++code) CHECK(names[code] == to_string(static_cast<SampleStatus>(code)));
+  std::vector<std::uint64_t> index(line.samples());
+  group.openDataSet("sample").read(index.data(), H5::PredType::NATIVE_UINT64);
+  for (std::size_t i = 0; i < index.size(); ++i) CHECK(index[i] == i);
+
+  check_summaries(read_summary(group.openDataSet("summary")), summaries_of(line));
+
+  const H5::Group correlation = group.openGroup("input_rank_correlation");
+  CHECK(read_strings(correlation, "names") == line.correlated_inputs);
+  std::vector<hsize_t> dims;
+  check_same(read_doubles(correlation.openDataSet("achieved"), &dims), row_major(line.achieved_spearman));
+  CHECK(dims == std::vector<hsize_t>{static_cast<hsize_t>(line.achieved_spearman.rows()), static_cast<hsize_t>(line.achieved_spearman.cols())});
+  CHECK(correlation.nameExists("target") == (line.target_spearman.size() > 0));
+  if (line.target_spearman.size() > 0) check_same(read_doubles(correlation.openDataSet("target")), row_major(line.target_spearman));
+
+  const LineAnalysis analysis = analyze_line(line);
+  const H5::Group analysis_group = group.openGroup("analysis");
+  CHECK(read_scalar<std::uint64_t>(analysis_group, "samples_used", H5::PredType::NATIVE_UINT64) == analysis.samples_used);
+  CHECK(read_strings(analysis_group, "notes") == analysis.notes);
+  const H5::DataSet spearman = analysis_group.openDataSet("input_output_spearman");
+  check_same(read_doubles(spearman, &dims), row_major(analysis.input_output_spearman));
+  CHECK(dims == std::vector<hsize_t>{analysis.inputs.size(), analysis.outputs.size()});
+  CHECK(read_strings(spearman, "rows") == analysis.inputs);
+  CHECK(read_strings(spearman, "columns") == analysis.outputs);
+  check_same(read_doubles(analysis_group.openDataSet("explained_variance_ratio")),
+             std::vector<double>(analysis.explained_variance_ratio.begin(), analysis.explained_variance_ratio.end()));
+  const H5::DataSet loadings = analysis_group.openDataSet("loadings");
+  check_same(read_doubles(loadings), row_major(analysis.loadings));
+  CHECK(read_strings(loadings, "rows") == analysis.pca_names);
+}
+
+}  // namespace
+
+TEST_CASE("results.h5 reads back exactly with the HDF5 C++ API") {
+  const Scratch scratch("readback");
+  const std::string path = scratch.path("results.h5");
+  write_campaign(path);
+  CHECK(fs::exists(path));
+  CHECK_FALSE(fs::exists(path + ".partial"));
+
+  const H5::H5File file(path, H5F_ACC_RDONLY);
+  const CampaignMetadata expected = metadata();
+  const H5::Group root = file.openGroup("/");
+  CHECK(read_string(root, "campaign_text") == expected.campaign_text);
+  CHECK(read_string(root, "campaign_path") == expected.campaign_path);
+  CHECK(read_string(root, "command_line") == expected.command_line);
+  CHECK(read_string(root, "engine_version") == expected.engine_version);
+  CHECK(read_scalar<std::uint64_t>(root, "seed", H5::PredType::NATIVE_UINT64) == expected.seed);
+  CHECK(read_scalar<double>(root, "kappa", H5::PredType::NATIVE_DOUBLE) == expected.kappa);
+  CHECK(read_scalar<std::uint64_t>(root, "samples_per_line", H5::PredType::NATIVE_UINT64) == 6);
+  CHECK(file.openGroup("lines").getNumObjs() == 2);
+
+  check_line(file, wild_type());
+  check_line(file, xxt1_xxt2());
+
+  std::vector<QuantitySummary> all = summaries_of(wild_type());
+  for (const QuantitySummary& s : summaries_of(xxt1_xxt2())) all.push_back(s);
+  check_summaries(read_summary(file.openDataSet("summary")), all);
+}
+
+TEST_CASE("h5py reads the file with its values and units") {
+  const char* python = "/usr/bin/python3";
+  if (!fs::exists(python) || std::system("/usr/bin/python3 -c 'import h5py, numpy' > /dev/null 2>&1") != 0) {
+    MESSAGE("skipped: /usr/bin/python3 with h5py and numpy is not available");
+    return;
+  }
+  const Scratch scratch("h5py");
+  const std::string path = scratch.path("results.h5");
+  write_campaign(path);
+  const std::string script = std::string(GROWTHUQ_SOURCE_DIR) + "/tests/io/check_results_h5.py";
+  const std::string output = scratch.path("h5py.txt");
+  const int code = std::system((std::string(python) + " '" + script + "' '" + path + "' > '" + output + "' 2>&1").c_str());
+  std::ifstream in(output);
+  const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  INFO(report);
+  CHECK(code == 0);
+  CHECK(report.find("results.h5 checked with h5py") != std::string::npos);
+}
+
+TEST_CASE("the .partial file is removed when the writer is abandoned") {
+  const Scratch scratch("abandon");
+  const std::string path = scratch.path("results.h5");
+  {
+    ResultsH5Writer writer(path, Overwrite::refuse);
+    const LineResult line = wild_type();
+    writer.write_line(line, summaries_of(line), analyze_line(line));
+    CHECK(fs::exists(path + ".partial"));
+    CHECK_FALSE(fs::exists(path));
+  }
+  CHECK_FALSE(fs::exists(path + ".partial"));
+  CHECK_FALSE(fs::exists(path));
+}
+
+TEST_CASE("an existing results file is refused unless overwriting is allowed") {
+  const Scratch scratch("overwrite");
+  const std::string path = scratch.path("results.h5");
+  std::ofstream(path) << "an earlier result";
+  CHECK_THROWS_WITH_AS(ResultsH5Writer(path, Overwrite::refuse),
+                       (path + ": already exists; choose another output or pass --force to overwrite").c_str(), InputError);
+  CHECK_FALSE(fs::exists(path + ".partial"));
+  write_campaign(path, Overwrite::allow);
+  const H5::H5File file(path, H5F_ACC_RDONLY);
+  CHECK(read_string(file.openGroup("/"), "engine_version") == "0.1.0");
+}
+
+TEST_CASE("bad line names and repeated lines are input errors; a bad directory too") {
+  const Scratch scratch("names");
+  ResultsH5Writer writer(scratch.path("results.h5"), Overwrite::refuse);
+  LineResult line = wild_type();
+  const std::vector<QuantitySummary> summaries = summaries_of(line);
+  const LineAnalysis analysis = analyze_line(line);
+  line.name = "wild/type";
+  CHECK_THROWS_WITH_AS(writer.write_line(line, summaries, analysis),
+                       (scratch.path("results.h5.partial") +
+                        ": line = 'wild/type': expected a line name without '/' that is not empty or '.' (it names an HDF5 group)")
+                           .c_str(),
+                       InputError);
+  line.name = "wild_type";
+  writer.write_line(line, summaries, analysis);
+  CHECK_THROWS_AS(writer.write_line(line, summaries, analysis), InputError);
+  line.columns[0].values.pop_back();
+  line.name = "other";
+  CHECK_THROWS_AS(writer.write_line(line, summaries, analysis), std::invalid_argument);
+
+  CHECK_THROWS_AS(ResultsH5Writer(scratch.path("no/such/dir/results.h5"), Overwrite::refuse), InputError);
+}
