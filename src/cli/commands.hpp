@@ -23,5 +23,6 @@ int run_fit(const Arguments& arguments);
 int run_eval(const Arguments& arguments);
 int run_correlate(const Arguments& arguments);
 int run_relax(const Arguments& arguments);
+int run_run(const Arguments& arguments);
 
 }  // namespace growthuq::cli

@@ -18,6 +18,7 @@ constexpr std::array commands{
     Command{"eval", "invert measured tubes to turgor, modulus and more (no Monte Carlo)", growthuq::cli::run_eval},
     Command{"correlate", "rank correlation of (k, h, d, d0) from the forward mechanics", growthuq::cli::run_correlate},
     Command{"relax", "fit generalized Maxwell series to force-relaxation curves", growthuq::cli::run_relax},
+    Command{"run", "run a campaign: plant lines through the models, summaries and result files", growthuq::cli::run_run},
 };
 
 void print_usage(std::ostream& out) {

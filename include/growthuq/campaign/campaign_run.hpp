@@ -1,0 +1,111 @@
+// The run of a campaign over its plant lines: every line's design is built identically on
+// every process, its samples are evaluated through the Pool in chunks, and the coordinating
+// process assembles one line at a time (LineResult) and hands it to an observer, which writes
+// it. kappa is calibrated on the reference line and applied to every line (PHYSICS.md sec. 6).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "growthuq/campaign/campaign_file.hpp"
+#include "growthuq/campaign/line_result.hpp"
+#include "growthuq/correlation/matrix_file.hpp"
+#include "growthuq/distributions/line_file.hpp"
+#include "growthuq/evaluation/evaluator.hpp"
+#include "growthuq/growth/growth_rate.hpp"
+#include "growthuq/growth/viscosity.hpp"
+#include "growthuq/mechanics/thin_shell_evaluators.hpp"
+#include "growthuq/pool/pool.hpp"
+#include "growthuq/sampling/line_design.hpp"
+
+namespace growthuq {
+
+// One line, validated and ready to sample.
+struct PreparedLine {
+  CampaignLine campaign_line;
+  LineDistributions distributions;
+  // The line-file variables the run samples (those the models read, plus outputs that are
+  // measurements), in line-file order. Unneeded variables are not sampled, so a turgor-only
+  // campaign runs on lines without thickness or relaxation data.
+  LineDistributions design_variables;
+  // The target over design variables (a matrix file or the `physics` matrix restricted to the
+  // variables sampled); empty when the line is uncorrelated or fewer than two variables remain.
+  std::optional<RankCorrelationFile> correlation;
+  std::vector<const Evaluator*> plan;  // points into the owning PreparedCampaign
+};
+
+// A campaign validated end to end before any sampling (issue 4, step 1): every line file and
+// correlation file read, the models planned per line, the reference line checked for v_exp.
+// The same on every process (pure function of the files), so all processes agree on it.
+class PreparedCampaign {
+ public:
+  // InputError naming file, line or key for any problem.
+  explicit PreparedCampaign(Campaign campaign);
+  PreparedCampaign(const PreparedCampaign&) = delete;
+  PreparedCampaign& operator=(const PreparedCampaign&) = delete;
+
+  const Campaign& campaign() const noexcept { return campaign_; }
+  // Lines in run order: the reference line first when v is an output, then file order.
+  const std::vector<PreparedLine>& lines() const noexcept { return lines_; }
+  // The requested outputs that models compute (outputs that are measurements are inputs).
+  const std::vector<std::string>& computed_outputs() const noexcept { return computed_outputs_; }
+  // True when v is an output: growth runs with kappa = 1 and is rescaled after the reference line.
+  bool calibrates_kappa() const noexcept { return calibrates_kappa_; }
+  // Median of the reference line's v_exp distribution [m/s]; NaN when !calibrates_kappa().
+  double experimental_median_growth_rate() const noexcept { return experimental_median_; }
+
+  // The line's design (identical on every process for the same campaign and seed).
+  LineDesign design(const PreparedLine& line) const;
+
+  // The chunk's computed outputs (SI), output after output, then each sample's status as a
+  // double: (computed_outputs().size() + 1) * (range.end - range.begin) values.
+  std::vector<double> evaluate_chunk(const PreparedLine& line, const LineDesign& design, ChunkRange range) const;
+
+ private:
+  Campaign campaign_;
+  ThinShellTurgor turgor_;
+  ThinShellModulus modulus_;
+  ViscosityEvaluator viscosity_;
+  GrowthEvaluator growth_;
+  std::vector<PreparedLine> lines_;
+  std::vector<std::string> computed_outputs_;
+  bool calibrates_kappa_ = false;
+  double experimental_median_;
+};
+
+// The seed of a line's `physics` correlation draws: derive_key(derive_key(mix64(seed), line),
+// "physics_correlation") (random_stream.hpp), so each line draws its own tubes reproducibly.
+std::uint64_t physics_correlation_seed(std::uint64_t campaign_seed, std::string_view line);
+
+// Receives the run's events on the coordinating process.
+class RunObserver {
+ public:
+  virtual ~RunObserver() = default;
+  virtual void line_started(const PreparedLine& line, std::size_t samples) = 0;
+  virtual void chunk_done(ChunkRange range) = 0;
+  // The finished line, v already scaled by the campaign's kappa; `warnings` from its design.
+  virtual void line_done(const LineResult& result, const std::vector<std::string>& warnings) = 0;
+};
+
+struct RunOutcome {
+  double kappa = 1.0;       // the calibrated kappa on the coordinator; 1 elsewhere and without v
+  bool calibrated = false;  // v was an output and kappa was calibrated on the reference line
+};
+
+// Runs every line through `pool` (all processes call it; `observer` is used on rank 0 only).
+// An InputError on the coordinator (kappa cannot be calibrated) is raised on every process;
+// a failed chunk raises PoolError everywhere.
+RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunObserver& observer);
+
+// Runs `action` on the coordinator and raises what it threw on every process: InputError as
+// InputError (same location and problem), anything else as std::runtime_error. All processes
+// must call it at the same point.
+void on_coordinator(Pool& pool, const std::function<void()>& action);
+
+}  // namespace growthuq

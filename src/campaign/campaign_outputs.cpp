@@ -1,0 +1,168 @@
+#include "growthuq/campaign/campaign_outputs.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+
+#include "growthuq/campaign/campaign_report.hpp"
+#include "growthuq/campaign/csv_results.hpp"
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+#include "growthuq/io/results_h5.hpp"
+#include "growthuq/stats/line_analysis.hpp"
+#include "growthuq/stats/quantity_summary.hpp"
+
+namespace growthuq {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Four significant digits: for reading, not for round trips.
+std::string format_significant(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
+
+std::string in_directory(const std::string& directory, const char* name) { return (fs::path(directory) / name).string(); }
+
+// Returns whether the directory was created by this run.
+bool prepare_output_directory(const Campaign& campaign, Overwrite overwrite) {
+  const std::string& directory = campaign.output_dir;
+  std::error_code error;
+  if (fs::exists(directory, error)) {
+    if (overwrite == Overwrite::refuse) {
+      throw InputError(directory, "output directory already exists; choose another (--out DIR) or pass --force to replace its results");
+    }
+    if (!fs::is_directory(directory, error)) throw InputError(directory, "exists and is not a directory");
+    if (!campaign.formats.csv) fs::remove(in_directory(directory, samples_csv_name), error);
+    if (!campaign.formats.hdf5) fs::remove(in_directory(directory, results_h5_name), error);
+    return false;
+  }
+  fs::create_directories(directory, error);
+  if (error) throw InputError(directory, "cannot create the output directory: " + error.message());
+  return true;
+}
+
+// The samples.csv columns: every line's inputs (first seen first), then the computed outputs.
+std::vector<std::string> sample_columns(const PreparedCampaign& campaign) {
+  std::vector<std::string> columns;
+  auto add = [&](const std::string& name) {
+    if (std::find(columns.begin(), columns.end(), name) == columns.end()) columns.push_back(name);
+  };
+  for (const PreparedLine& line : campaign.lines()) {
+    for (const LineVariable& variable : line.design_variables.variables) add(column_name(variable.name, *variable.unit));
+  }
+  for (const std::string& output : campaign.computed_outputs()) add(default_column_name(*find_quantity(output)));
+  return columns;
+}
+
+// Streams each finished line to the writers and keeps only its summaries and report text.
+class OutputObserver final : public RunObserver {
+ public:
+  OutputObserver(const PreparedCampaign& campaign, const OutputSettings& settings, std::ostream& log)
+      : campaign_(campaign),
+        log_(log),
+        progress_(settings.progress, log, campaign.campaign().samples * campaign.lines().size()) {}
+
+  void open(const PreparedCampaign& campaign) {
+    const Campaign& c = campaign.campaign();
+    if (c.formats.csv) samples_.emplace(in_directory(c.output_dir, samples_csv_name), sample_columns(campaign));
+    if (c.formats.hdf5) h5_.emplace(in_directory(c.output_dir, results_h5_name), Overwrite::allow);
+  }
+
+  void line_started(const PreparedLine& line, std::size_t samples) override {
+    progress_.line_started(line.campaign_line.name, samples);
+  }
+
+  void chunk_done(ChunkRange range) override { progress_.advance(range.end - range.begin); }
+
+  void line_done(const LineResult& result, const std::vector<std::string>& warnings) override {
+    progress_.line_finished();
+    for (const std::string& warning : warnings) log_ << "growthuq run: line '" << result.name << "': " << warning << "\n";
+    std::vector<QuantitySummary> line_summaries;
+    for (const std::string& output : campaign_.campaign().outputs) {
+      for (const ResultColumn& column : result.columns) {
+        if (column.quantity == output) line_summaries.push_back(summarize_quantity(result.name, column, result.status));
+      }
+    }
+    summaries_.insert(summaries_.end(), line_summaries.begin(), line_summaries.end());
+    if (samples_) samples_->write_line(result);
+    const LineAnalysis analysis = analyze_line(result);
+    if (h5_) h5_->write_line(result, line_summaries, analysis);
+    line_reports_ += "\nline " + result.name + ": input rank correlation (Spearman)\n" + format_input_correlation(result) +
+                     format_line_analysis(analysis);
+  }
+
+  void finish(const CampaignOutcome& outcome, const OutputSettings& settings, std::ostream& report) {
+    const Campaign& c = campaign_.campaign();
+    if (samples_) samples_->finish();
+    write_file_atomically(in_directory(c.output_dir, summary_csv_name), summary_csv_text(summaries_), Overwrite::allow);
+    if (h5_) {
+      CampaignMetadata metadata;
+      metadata.campaign_text = c.text;
+      metadata.campaign_path = c.path;
+      metadata.command_line = settings.command_line;
+      metadata.engine_version = GROWTHUQ_VERSION;
+      metadata.seed = c.seed;
+      if (outcome.run.calibrated) metadata.kappa = outcome.run.kappa;
+      metadata.samples_per_line = c.samples;
+      h5_->finish(metadata);
+    }
+    report << "campaign '" << c.name << "': " << c.lines.size() << " lines x " << c.samples << " samples, seed " << c.seed
+           << ", results in " << c.output_dir << "\n\n"
+           << format_summary_table(summaries_);
+    if (outcome.run.calibrated) {
+      report << "\nkappa = " << format_double(outcome.run.kappa) << " (calibrated on " << c.reference_line
+             << ": its predicted median v equals the median of its v_exp, "
+             << format_significant(campaign_.experimental_median_growth_rate() * 1e6) << " um/s)\n";
+    }
+    report << line_reports_;
+  }
+
+  const std::vector<QuantitySummary>& summaries() const { return summaries_; }
+
+  // After a failure: closes the writers, which remove their .partial files.
+  void abandon() {
+    samples_.reset();
+    h5_.reset();
+  }
+
+ private:
+  const PreparedCampaign& campaign_;
+  std::ostream& log_;
+  Progress progress_;
+  std::optional<SamplesCsvWriter> samples_;
+  std::optional<ResultsH5Writer> h5_;
+  std::vector<QuantitySummary> summaries_;
+  std::string line_reports_;
+};
+
+}  // namespace
+
+CampaignOutcome run_campaign_with_outputs(const PreparedCampaign& campaign, Pool& pool, const OutputSettings& settings,
+                                          std::ostream& report, std::ostream& log) {
+  OutputObserver observer(campaign, settings, log);
+  bool created = false;
+  CampaignOutcome outcome;
+  try {
+    on_coordinator(pool, [&] {
+      created = prepare_output_directory(campaign.campaign(), settings.overwrite);
+      observer.open(campaign);
+    });
+    outcome.run = run_campaign_lines(campaign, pool, observer);
+    on_coordinator(pool, [&] { observer.finish(outcome, settings, report); });
+  } catch (...) {
+    // A failed run leaves no output directory of its own making behind (an empty one would
+    // only make the rerun need --force); finished files of a forced directory stay.
+    observer.abandon();
+    std::error_code ignored;
+    if (created) fs::remove(campaign.campaign().output_dir, ignored);
+    throw;
+  }
+  outcome.summaries = observer.summaries();
+  return outcome;
+}
+
+}  // namespace growthuq

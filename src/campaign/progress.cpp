@@ -1,0 +1,84 @@
+#include "growthuq/campaign/progress.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+
+namespace growthuq {
+namespace {
+
+// "1.2e+04"-style rates read badly in a bar; three significant digits suffice.
+std::string rate_text(double per_second) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", per_second);
+  return text;
+}
+
+std::string duration_text(double seconds) {
+  if (!(seconds >= 0) || seconds > 360000) return "--:--";
+  const auto whole = static_cast<long>(seconds + 0.5);
+  char text[32];
+  std::snprintf(text, sizeof text, "%ld:%02ld", whole / 60, whole % 60);
+  return text;
+}
+
+double seconds_between(std::chrono::steady_clock::time_point from, std::chrono::steady_clock::time_point to) {
+  return std::chrono::duration<double>(to - from).count();
+}
+
+}  // namespace
+
+ProgressMode choose_progress_mode(bool quiet) {
+  if (quiet) return ProgressMode::none;
+  return isatty(STDERR_FILENO) != 0 ? ProgressMode::bar : ProgressMode::lines;
+}
+
+Progress::Progress(ProgressMode mode, std::ostream& out, std::size_t total_samples)
+    : mode_(mode), out_(out), total_(total_samples) {}
+
+void Progress::line_started(std::string_view line, std::size_t samples) {
+  line_ = std::string(line);
+  line_samples_ = samples;
+  line_done_ = 0;
+  line_start_ = Clock::now();
+  draw_bar(true);
+}
+
+void Progress::advance(std::size_t samples) {
+  done_ += samples;
+  line_done_ += samples;
+  draw_bar(false);
+}
+
+void Progress::line_finished() {
+  const double seconds = seconds_between(line_start_, Clock::now());
+  if (mode_ == ProgressMode::bar) {
+    out_ << "\r\033[K" << std::flush;
+  }
+  if (mode_ != ProgressMode::none) {
+    char timing[64];
+    std::snprintf(timing, sizeof timing, "%.3g s", seconds);
+    out_ << line_ << ": " << line_done_ << " samples in " << timing;
+    if (seconds > 0) out_ << " (" << rate_text(static_cast<double>(line_done_) / seconds) << " samples/s)";
+    out_ << "\n" << std::flush;
+  }
+}
+
+void Progress::draw_bar(bool force) {
+  if (mode_ != ProgressMode::bar) return;
+  const Clock::time_point now = Clock::now();
+  // Redrawing more than ten times a second only costs time.
+  if (!force && seconds_between(last_draw_, now) < 0.1 && done_ < total_) return;
+  last_draw_ = now;
+  constexpr int width = 30;
+  const double fraction = total_ == 0 ? 1.0 : static_cast<double>(done_) / static_cast<double>(total_);
+  const int filled = static_cast<int>(fraction * width);
+  const double elapsed = seconds_between(start_, now);
+  const double rate = elapsed > 0 ? static_cast<double>(done_) / elapsed : 0.0;
+  const double left = rate > 0 ? static_cast<double>(total_ - done_) / rate : -1.0;
+  out_ << "\r\033[K[" << std::string(static_cast<std::size_t>(filled), '#')
+       << std::string(static_cast<std::size_t>(width - filled), '.') << "] " << done_ << "/" << total_ << " samples  "
+       << line_ << "  " << rate_text(rate) << "/s  left " << duration_text(left) << std::flush;
+}
+
+}  // namespace growthuq

@@ -1,0 +1,318 @@
+// `growthuq run` end to end through the built CLI: the files it writes, their columns, summary
+// numbers recomputed from samples.csv, kappa calibration, a turgor-only campaign without wall
+// thickness, and the errors a user meets (bad campaign, existing output directory).
+#include <doctest/doctest.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "growthuq/campaign/campaign_run.hpp"
+#include "growthuq/core/error.hpp"
+#include "growthuq/io/csv.hpp"
+
+using namespace growthuq;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string data_dir = std::string(GROWTHUQ_SOURCE_DIR) + "/tests/campaign/data";
+
+struct Outcome {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Runs the CLI with `arguments` (shell words), capturing stdout and stderr.
+Outcome run_cli(const std::string& arguments, const fs::path& scratch) {
+  const fs::path out = scratch / "stdout.txt";
+  const fs::path err = scratch / "stderr.txt";
+  const std::string command = std::string(GROWTHUQ_CLI) + " " + arguments + " >" + out.string() + " 2>" + err.string();
+  const int status = std::system(command.c_str());
+  Outcome outcome;
+  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  outcome.out = slurp(out);
+  outcome.err = slurp(err);
+  return outcome;
+}
+
+struct Scratch {
+  fs::path root;
+  explicit Scratch(const std::string& name) : root(fs::temp_directory_path() / ("growthuq_test_run_" + name)) {
+    fs::remove_all(root);
+    fs::create_directories(root);
+  }
+  ~Scratch() { fs::remove_all(root); }
+};
+
+std::size_t count_lines(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
+
+// Type-7 quantile (numpy's default), written out here independently of the engine's.
+double quantile7(const std::vector<double>& sorted, double p) {
+  const double h = static_cast<double>(sorted.size() - 1) * p;
+  const auto low = static_cast<std::size_t>(std::floor(h));
+  const std::size_t high = std::min(low + 1, sorted.size() - 1);
+  return sorted[low] + (h - static_cast<double>(low)) * (sorted[high] - sorted[low]);
+}
+
+// 1-based rank `lower` of the distribution-free 95 % interval [X(l), X(n+1-l)] of the median:
+// the largest l with 1 - 2 P(B <= l - 1) >= 0.95, B ~ binomial(n, 1/2) (Conover 1999, 3.2).
+std::size_t median_ci_lower_rank(std::size_t n) {
+  std::size_t lower = 1;
+  double below = 0;  // P(B <= l - 1)
+  for (std::size_t l = 1; l <= n / 2; ++l) {
+    below += std::exp(std::lgamma(static_cast<double>(n) + 1) - std::lgamma(static_cast<double>(l)) -
+                      std::lgamma(static_cast<double>(n - l + 2)) - static_cast<double>(n) * std::log(2.0));
+    if (1 - 2 * below >= 0.95) lower = l;
+    else break;
+  }
+  return lower;
+}
+
+double relative_difference(double a, double b) { return a == b ? 0.0 : std::abs(a - b) / std::max(std::abs(a), std::abs(b)); }
+
+}  // namespace
+
+TEST_CASE("a small campaign end to end: files, columns, summaries from samples.csv, kappa") {
+  const Scratch scratch("small");
+  const fs::path out = scratch.root / "results";
+  const Outcome run = run_cli("run " + data_dir + "/small_campaign.ini --out " + out.string() + " --formats csv,hdf5", scratch.root);
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  CHECK(fs::is_regular_file(out / "samples.csv"));
+  CHECK(fs::is_regular_file(out / "summary.csv"));
+  CHECK(fs::is_regular_file(out / "results.h5"));
+  CHECK_FALSE(fs::exists(out / "samples.csv.partial"));
+  // stderr is a file here: one progress line per plant line, reference line first.
+  CHECK(run.err.starts_with("wild_type: 200 samples in "));
+  CHECK(run.err.find("\npme48: 200 samples in ") != std::string::npos);
+  CHECK(run.out.find("kappa = ") != std::string::npos);
+
+  const std::string samples_text = slurp(out / "samples.csv");
+  const std::string summary_text = slurp(out / "summary.csv");
+  CHECK(samples_text.find("nan") == std::string::npos);
+  CHECK(summary_text.find("nan") == std::string::npos);
+
+  const CsvTable samples = read_csv((out / "samples.csv").string());
+  CHECK(samples.header == std::vector<std::string>{"line", "sample", "k_N_per_m", "h_nm", "d_um", "d0_um", "tau_s", "einf_pct",
+                                                   "p_MPa", "E_MPa", "eta_MPa_s", "v_um_per_s", "status"});
+  REQUIRE(samples.rows.size() == 400);
+  CHECK(samples.rows.front()[0] == "wild_type");  // the reference line runs first
+  CHECK(samples.rows.back()[0] == "pme48");
+  CHECK(samples.rows[199][1] == "199");
+
+  // Per line and quantity: the values that count (status ok; for v also no_growth).
+  const std::vector<std::string> quantities{"p", "E", "eta", "v"};
+  std::map<std::string, std::map<std::string, std::vector<double>>> counted;
+  std::map<std::string, std::size_t> flagged_v;
+  std::map<std::string, std::size_t> no_growth;
+  std::vector<double> wild_type_growing_v;
+  for (std::size_t r = 0; r < samples.rows.size(); ++r) {
+    const auto& row = samples.rows[r];
+    const std::string& line = row[0];
+    const std::string& status = row[12];
+    const auto cell = [&](std::size_t c) { return std::stod(row[c]); };
+    // Every row's outputs follow from the same row's inputs (chunks were placed where they
+    // belong): eta = tau (1 - e_inf) E [PHYSICS.md sec. 5] and v / (p d^2 / (4 eta h)) = kappa
+    // [sec. 6], the same for every growing tube.
+    if (status == "ok") {
+      const double eta = cell(6) * (1 - cell(7) / 100) * cell(9);  // s x MPa = MPa s
+      CHECK(relative_difference(cell(10), eta) < 1e-13);
+      counted[line]["v"].push_back(cell(11));
+      if (line == "wild_type") wild_type_growing_v.push_back(cell(11));
+      for (std::size_t q = 0; q < 3; ++q) counted[line][quantities[q]].push_back(cell(8 + q));
+    } else if (status == "no_growth") {
+      CHECK(row[11] == "0");
+      CHECK(cell(8) <= 0.15);
+      counted[line]["v"].push_back(0.0);
+      ++no_growth[line];
+    } else {
+      CHECK(row[11].empty());
+      ++flagged_v[line];
+    }
+  }
+  CHECK(no_growth["wild_type"] + no_growth["pme48"] > 0);  // the yield pressure is exercised
+
+  // kappa = v / (4^-1 (p - p0) d^2 / (eta h)) in consistent units, one value for both lines.
+  std::vector<double> kappas;
+  for (const auto& row : samples.rows) {
+    if (row[12] != "ok") continue;
+    const double p = (std::stod(row[8]) - 0.15) * 1e6, d = std::stod(row[4]) * 1e-6, h = std::stod(row[3]) * 1e-9;
+    const double eta = std::stod(row[10]) * 1e6, v = std::stod(row[11]) * 1e-6;
+    kappas.push_back(v / (p * d * d / (4 * eta * h)));
+  }
+  REQUIRE_FALSE(kappas.empty());
+  for (const double kappa : kappas) CHECK(relative_difference(kappa, kappas.front()) < 1e-12);
+  // The reference line's predicted median growth rate (growing tubes) equals the median of its
+  // v_exp law, 0.028 um/s in distributions/wild_type.ini; a few ulps of rounding allowed.
+  std::sort(wild_type_growing_v.begin(), wild_type_growing_v.end());
+  CHECK(relative_difference(quantile7(wild_type_growing_v, 0.5), 0.028) < 1e-12);
+
+  const CsvTable summary = read_csv((out / "summary.csv").string());
+  CHECK(summary.header == std::vector<std::string>{"line", "quantity", "unit", "n", "n_flagged", "median", "q1", "q3", "iqr",
+                                                   "p10", "p90", "mean", "sd", "median_ci_low", "median_ci_high"});
+  REQUIRE(summary.rows.size() == 8);
+  for (std::size_t r = 0; r < summary.rows.size(); ++r) {
+    const auto& row = summary.rows[r];
+    const std::string line = row[0];
+    const std::string quantity = row[1];
+    INFO(line << " " << quantity);
+    CHECK(line == (r < 4 ? "wild_type" : "pme48"));
+    CHECK(quantity == quantities[r % 4]);
+    std::vector<double> values = counted[line][quantity];
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    REQUIRE(n > 10);
+    CHECK(std::stoul(row[3]) == n);
+    CHECK(std::stoul(row[4]) == 200 - n);
+    // Same order statistics, same interpolation: agreement to rounding (the CSV holds
+    // shortest round-trip doubles, so only the arithmetic order can differ).
+    const auto column = [&](std::size_t c) { return std::stod(row[c]); };
+    CHECK(relative_difference(column(5), quantile7(values, 0.5)) < 1e-14);
+    CHECK(relative_difference(column(6), quantile7(values, 0.25)) < 1e-14);
+    CHECK(relative_difference(column(7), quantile7(values, 0.75)) < 1e-14);
+    CHECK(relative_difference(column(8), quantile7(values, 0.75) - quantile7(values, 0.25)) < 1e-12);
+    CHECK(relative_difference(column(9), quantile7(values, 0.1)) < 1e-14);
+    CHECK(relative_difference(column(10), quantile7(values, 0.9)) < 1e-14);
+    double mean = 0;
+    for (const double value : values) mean += value / static_cast<double>(n);
+    double squares = 0;
+    for (const double value : values) squares += (value - mean) * (value - mean);
+    CHECK(relative_difference(column(11), mean) < 1e-12);
+    CHECK(relative_difference(column(12), std::sqrt(squares / static_cast<double>(n - 1))) < 1e-10);
+    const std::size_t lower = median_ci_lower_rank(n);
+    CHECK(column(13) == values[lower - 1]);
+    CHECK(column(14) == values[n - lower]);
+  }
+}
+
+TEST_CASE("a turgor-only campaign runs on a line without thickness or relaxation data") {
+  const Scratch scratch("turgor");
+  const fs::path out = scratch.root / "results";
+  const Outcome run = run_cli("run " + data_dir + "/turgor_campaign.ini --quiet --out " + out.string(), scratch.root);
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  CHECK(run.err.empty());  // --quiet: no progress
+  const CsvTable samples = read_csv((out / "samples.csv").string());
+  CHECK(samples.header == std::vector<std::string>{"line", "sample", "k_N_per_m", "d_um", "d0_um", "p_MPa", "status"});
+  CHECK(samples.rows.size() == 150);
+  CHECK_FALSE(fs::exists(out / "results.h5"));  // formats = csv
+  const CsvTable summary = read_csv((out / "summary.csv").string());
+  REQUIRE(summary.rows.size() == 1);
+  CHECK(summary.rows[0][1] == "p");
+  CHECK(summary.rows[0][2] == "MPa");
+
+  // The library plans one model, samples three variables and keeps their physics correlation.
+  Campaign campaign = read_campaign(data_dir + "/turgor_campaign.ini");
+  const PreparedCampaign prepared(std::move(campaign));
+  REQUIRE(prepared.lines().size() == 1);
+  const PreparedLine& line = prepared.lines()[0];
+  CHECK(line.plan.size() == 1);
+  CHECK(line.plan[0]->name() == "thin_shell_turgor");
+  REQUIRE(line.correlation.has_value());
+  CHECK(line.correlation->names == std::vector<std::string>{"k", "d", "d0"});
+  CHECK_FALSE(prepared.calibrates_kappa());
+}
+
+TEST_CASE("a bad campaign is one line on stderr and exit code 2, before any output exists") {
+  const Scratch scratch("bad");
+  const fs::path campaign = scratch.root / "bad.ini";
+  std::string text = slurp(data_dir + "/small_campaign.ini");
+  text.replace(text.find("samples = 200"), 13, "samples = many");
+  text.replace(text.find("../../../distributions"), 22, std::string(GROWTHUQ_SOURCE_DIR) + "/distributions");
+  text.replace(text.find("../../../distributions"), 22, std::string(GROWTHUQ_SOURCE_DIR) + "/distributions");
+  std::ofstream(campaign) << text;
+  const fs::path out = scratch.root / "results";
+  Outcome run = run_cli("run " + campaign.string() + " --out " + out.string(), scratch.root);
+  CHECK(run.exit_code == 2);
+  CHECK(run.err == "growthuq run: error: " + campaign.string() + ":6: samples = 'many': expected a whole number from 1 to 4294967295\n");
+  CHECK_FALSE(fs::exists(out));
+
+  run = run_cli("run " + data_dir + "/small_campaign.ini --samples 0 --out " + out.string(), scratch.root);
+  CHECK(run.exit_code == 2);
+  CHECK(count_lines(run.err) == 1);
+  CHECK(run.err.find("--samples = '0'") != std::string::npos);
+
+  run = run_cli("run " + data_dir + "/small_campaign.ini --lines pme48 --out " + out.string(), scratch.root);
+  CHECK(run.exit_code == 2);
+  CHECK(count_lines(run.err) == 1);
+  CHECK(run.err.find("keeps the reference line 'wild_type'") != std::string::npos);
+
+  // A reference line whose models lack inputs is named with what it lacks.
+  std::string lacking = slurp(data_dir + "/small_campaign.ini");
+  lacking.replace(lacking.find("reference_line = wild_type"), 26, "reference_line = turgor_line");
+  lacking += "[line turgor_line]\ndistributions = " + data_dir + "/turgor_line.ini\n";
+  for (int i = 0; i < 2; ++i) lacking.replace(lacking.find("../../../distributions"), 22, std::string(GROWTHUQ_SOURCE_DIR) + "/distributions");
+  std::ofstream(campaign) << lacking;
+  run = run_cli("run " + campaign.string() + " --out " + out.string(), scratch.root);
+  CHECK(run.exit_code == 2);
+  CHECK(count_lines(run.err) == 1);
+  CHECK(run.err.find(campaign.string() + ":30: line 'turgor_line'") != std::string::npos);
+
+  // The reference line must have an experimental growth rate: its median calibrates kappa.
+  const std::string wild_type = slurp(std::string(GROWTHUQ_SOURCE_DIR) + "/distributions/wild_type.ini");
+  const fs::path no_v_exp = scratch.root / "no_v_exp.ini";
+  std::ofstream(no_v_exp) << wild_type.substr(0, wild_type.find("[v_exp]"));
+  std::string reference = slurp(data_dir + "/small_campaign.ini");
+  reference.replace(reference.find("../../../distributions/wild_type.ini"), 36, no_v_exp.string());
+  reference.replace(reference.find("../../../distributions"), 22, std::string(GROWTHUQ_SOURCE_DIR) + "/distributions");
+  std::ofstream(campaign) << reference;
+  run = run_cli("run " + campaign.string() + " --out " + out.string(), scratch.root);
+  CHECK(run.exit_code == 2);
+  CHECK(run.err == "growthuq run: error: " + campaign.string() + ": [growth] reference_line = 'wild_type': expected a line whose "
+                   "distribution file (" + no_v_exp.string() + ") has a [v_exp] section: its median calibrates kappa\n");
+  CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("a run that cannot calibrate kappa stops with one error and leaves no output directory") {
+  const Scratch scratch("kappa");
+  // A yield pressure of 5 MPa is above every sampled turgor: no reference tube grows.
+  std::string text = slurp(data_dir + "/small_campaign.ini");
+  text.replace(text.find("yield_pressure_MPa = 0.15"), 25, "yield_pressure_MPa = 5");
+  for (int i = 0; i < 2; ++i) text.replace(text.find("../../../distributions"), 22, std::string(GROWTHUQ_SOURCE_DIR) + "/distributions");
+  const fs::path campaign = scratch.root / "kappa.ini";
+  std::ofstream(campaign) << text;
+  const fs::path out = scratch.root / "results";
+  const Outcome run = run_cli("run " + campaign.string() + " --quiet --formats csv,hdf5 --out " + out.string(), scratch.root);
+  CHECK(run.exit_code == 2);
+  CHECK(run.err.starts_with("growthuq run: error: reference line 'wild_type': predicted median growth rate (kappa = 1) = 'nan'"));
+  CHECK(count_lines(run.err) == 1);
+  CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("an existing output directory is refused without --force and replaced with it") {
+  const Scratch scratch("exists");
+  const fs::path out = scratch.root / "results";
+  fs::create_directories(out);
+  std::ofstream(out / "results.h5") << "stale";
+  Outcome run = run_cli("run " + data_dir + "/turgor_campaign.ini --quiet --out " + out.string(), scratch.root);
+  CHECK(run.exit_code == 2);
+  CHECK(run.err == "growthuq run: error: " + out.string() +
+                       ": output directory already exists; choose another (--out DIR) or pass --force to replace its results\n");
+  CHECK_FALSE(fs::exists(out / "summary.csv"));
+  run = run_cli("run " + data_dir + "/turgor_campaign.ini --quiet --force --out " + out.string(), scratch.root);
+  CHECK(run.exit_code == 0);
+  CHECK(fs::is_regular_file(out / "summary.csv"));
+  CHECK_FALSE(fs::exists(out / "results.h5"));  // a stale result of a format not written is removed
+}
+
+TEST_CASE("physics correlation seeds differ per line and follow the documented scheme") {
+  CHECK(physics_correlation_seed(11, "wild_type") != physics_correlation_seed(11, "pme48"));
+  CHECK(physics_correlation_seed(11, "wild_type") != physics_correlation_seed(12, "wild_type"));
+}
