@@ -1,7 +1,5 @@
 #include "distributions/checks.hpp"
 
-#include <gsl/gsl_errno.h>
-
 #include <cmath>
 #include <string>
 
@@ -9,14 +7,6 @@
 #include "growthuq/core/numbers.hpp"
 
 namespace growthuq::detail {
-
-void gsl_errors_return() {
-  static const bool switched_off = [] {
-    gsl_set_error_handler_off();
-    return true;
-  }();
-  (void)switched_off;
-}
 
 void require_finite(std::string_view family, std::string_view key, double value) {
   if (!std::isfinite(value)) throw_bad_value(family, key, format_double(value), "a finite number");

@@ -1,17 +1,13 @@
 // Shared validation of the distribution component: parameter checks that name the family and
-// parameter, the probability check of every quantile, and the one place GSL's
-// abort-on-error handler is switched off.
+// parameter and the probability check of every quantile (GSL's abort handler is switched off
+// through core/gsl_errors.hpp).
 #pragma once
+
+#include "core/gsl_errors.hpp"
 
 #include <string_view>
 
 namespace growthuq::detail {
-
-// Switches GSL's default error handler (print and abort) off, once per process, so a GSL
-// domain or convergence error returns a status/NaN that the caller handles instead of killing
-// the run. Called by every distribution constructor and fitter before any GSL call; cheap
-// after the first call (a function-local static).
-void gsl_errors_return();
 
 // InputError "<family>: <key> = '<value>': expected a finite number" unless value is finite.
 void require_finite(std::string_view family, std::string_view key, double value);

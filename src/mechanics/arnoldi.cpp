@@ -21,22 +21,14 @@
 #include <gsl/gsl_roots.h>
 #include <gsl/gsl_sf_bessel.h>
 
+#include "core/gsl_errors.hpp"
+
 namespace growthuq {
 namespace {
 
 constexpr double series_limit = 1e-5;
 constexpr double asymptotic_limit = 1e3;
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-
-// GSL aborts on domain errors by default; the engine checks every status instead. Done once,
-// thread-safe (static initialization), before the first GSL call of this file.
-void turn_off_gsl_abort() {
-  static const bool off = [] {
-    gsl_set_error_handler_off();
-    return true;
-  }();
-  (void)off;
-}
 
 double phi_series(double x) {
   // ln 2 - ln x rather than ln(2/x): 2/x overflows for subnormal x.
@@ -46,7 +38,7 @@ double phi_series(double x) {
 }
 
 double phi_scaled_bessel(double x) {
-  turn_off_gsl_abort();
+  detail::gsl_errors_return();
   gsl_sf_result k0;
   gsl_sf_result k1;
   if (gsl_sf_bessel_K0_scaled_e(x, &k0) != GSL_SUCCESS) return nan;
@@ -112,7 +104,7 @@ double arnoldi_phi_inverse(double phi) {
   if (f_hi == 0.0) return phi;
   if (f.function(t_lo, f.params) == 0.0) return std::exp(t_lo);
 
-  turn_off_gsl_abort();
+  detail::gsl_errors_return();
   gsl_root_fsolver* solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
   if (solver == nullptr) return nan;
   double t = nan;

@@ -11,6 +11,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_sf_lambert.h>
 
+#include "core/gsl_errors.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/mechanics/arnoldi.hpp"
@@ -24,14 +25,6 @@ bool positive_finite(double value) noexcept { return std::isfinite(value) && val
 
 // alpha from the stretch measure q in [0, 1): both relations combined.
 double decay_length(double d, double q) noexcept { return d * std::sqrt(3.0 * q / (16.0 * (1.0 - q))); }
-
-void turn_off_gsl_abort() noexcept {
-  static const bool off = [] {
-    gsl_set_error_handler_off();
-    return true;
-  }();
-  (void)off;
-}
 
 }  // namespace
 
@@ -133,7 +126,7 @@ ForwardResult thin_shell_forward(double p, double E, double h, double d0,
     result.status = SampleStatus::burst;
     return result;
   }
-  turn_off_gsl_abort();
+  detail::gsl_errors_return();
   gsl_sf_result w;
   if (z == 0.0) {
     w.val = 0.0;  // c d0 underflowed: no stretch to double precision

@@ -3,6 +3,8 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multimin.h>
 
+#include "core/gsl_errors.hpp"
+
 #include <cmath>
 #include <functional>
 #include <iomanip>
@@ -102,6 +104,7 @@ struct Minimum {
 // smooth where NNLS's active set changes, and it has at most three unknowns: a simplex is
 // robust there and cheap, where gsl_multifit_nlinear would need a Jacobian of a non-smooth map.
 Minimum minimize_from(const std::vector<double>& start, Problem& problem) {
+  detail::gsl_errors_return();  // GSL reports through return codes; it must never abort a run
   const bool has_extra = problem.extra_max > problem.extra_min;
   const std::size_t n = start.size() + (has_extra ? 1 : 0);
   gsl_multimin_function function{projected_residual, n, &problem};
