@@ -1,6 +1,7 @@
 #include "growthuq/sampling/latin_hypercube.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -8,65 +9,100 @@
 #include <utility>
 
 #include "growthuq/sampling/random_stream.hpp"
+#include "sampling/avx2_clone.hpp"
+#include "sampling/latin_column.hpp"
 
 namespace growthuq {
 
-namespace {
+namespace detail {
 
-// 32-bit words from a 64-bit stream: the high half of each draw, then its low half.
-class WordStream {
- public:
-  explicit WordStream(RandomStream& stream) : stream_(stream) {}
-  std::uint32_t next() {
-    if (has_low_) {
-      has_low_ = false;
-      return static_cast<std::uint32_t>(buffer_);
+GROWTHUQ_AVX2_CLONE
+void shuffle_strata(std::span<std::uint32_t> stratum, Mt19937_64Block& random) {
+  std::iota(stratum.begin(), stratum.end(), std::uint32_t{0});
+  // Fisher-Yates from the last position down: swap position i with j = below(i + 1) (Lemire
+  // 2019, 32-bit form, on the high then the low half of each 64-bit draw). For large n every
+  // swap is a cache miss. The draws do not depend on the array, so they run one batch ahead of
+  // the swaps: the partners of batch b + 1 are drawn and prefetched while batch b is swapped.
+  // Draws and swaps each happen in the same order as in the plain loop.
+  constexpr std::size_t batch = 64;
+  std::uint32_t* values = stratum.data();
+  std::uint32_t partners[2][batch];
+  std::uint64_t word_pair = 0;
+  bool has_low = false;
+  const auto next_word = [&]() -> std::uint32_t {
+    if (has_low) {
+      has_low = false;
+      return static_cast<std::uint32_t>(word_pair);
     }
-    buffer_ = stream_.bits();
-    has_low_ = true;
-    return static_cast<std::uint32_t>(buffer_ >> 32);
-  }
-
-  // Uniform in [0, bound) for 1 <= bound < 2^32 (Lemire 2019, 32-bit form).
-  std::uint32_t below(std::uint32_t bound) {
-    std::uint64_t product = std::uint64_t{next()} * bound;
-    auto low = static_cast<std::uint32_t>(product);
-    if (low < bound) {
-      const std::uint32_t threshold = (0u - bound) % bound;
-      while (low < threshold) {
-        product = std::uint64_t{next()} * bound;
-        low = static_cast<std::uint32_t>(product);
-      }
-    }
-    return static_cast<std::uint32_t>(product >> 32);
-  }
-
- private:
-  RandomStream& stream_;
-  std::uint64_t buffer_ = 0;
-  bool has_low_ = false;
-};
-
-// Fisher-Yates from the last position down: swap position i with j = below(i + 1). The swap
-// partners of a batch are drawn first and prefetched, since for large n every swap is a cache
-// miss; the draws and swaps happen in the same order as in the plain loop.
-void shuffle(std::vector<std::uint32_t>& values, RandomStream& stream) {
-  constexpr std::size_t batch = 32;
-  WordStream words(stream);
-  std::uint32_t partner[batch];
-  std::size_t i = values.size() - 1;
-  while (i > 0) {
-    const std::size_t count = std::min(batch, i);
+    word_pair = random();
+    has_low = true;
+    return static_cast<std::uint32_t>(word_pair >> 32);
+  };
+  // Draws the partners of positions top, top - 1, ..., top - count + 1 into `partner`.
+  const auto draw = [&](std::size_t top, std::size_t count, std::uint32_t* partner) {
     for (std::size_t b = 0; b < count; ++b) {
-      partner[b] = words.below(static_cast<std::uint32_t>(i - b + 1));
-      __builtin_prefetch(&values[partner[b]], 1);
+      const auto bound = static_cast<std::uint32_t>(top - b + 1);
+      std::uint64_t product = std::uint64_t{next_word()} * bound;
+      if (static_cast<std::uint32_t>(product) < bound) {
+        const std::uint32_t threshold = (0u - bound) % bound;
+        while (static_cast<std::uint32_t>(product) < threshold) product = std::uint64_t{next_word()} * bound;
+      }
+      partner[b] = static_cast<std::uint32_t>(product >> 32);
+      __builtin_prefetch(values + partner[b], 1);
     }
-    for (std::size_t b = 0; b < count; ++b) std::swap(values[i - b], values[partner[b]]);
-    i -= count;
+  };
+  std::size_t i = stratum.size() - 1;
+  std::size_t count = std::min(batch, i);
+  int current = 0;
+  draw(i, count, partners[current]);
+  while (i > 0) {
+    const std::size_t next_top = i - count;
+    const std::size_t next_count = std::min(batch, next_top);
+    draw(next_top, next_count, partners[1 - current]);
+    for (std::size_t b = 0; b < count; ++b) std::swap(values[i - b], values[partners[current][b]]);
+    i = next_top;
+    count = next_count;
+    current = 1 - current;
   }
 }
 
-}  // namespace
+GROWTHUQ_AVX2_CLONE
+void stratum_points(Mt19937_64Block& random, std::size_t n, std::size_t first, std::span<double> u,
+                    StratumPosition position) {
+  const double width = 1.0 / static_cast<double>(n);
+  const double below_one = std::nextafter(1.0, 0.0);
+  constexpr std::size_t block = 512;
+  std::uint64_t bits[block];
+  double offset[block];
+  for (std::size_t start = 0; start < u.size(); start += block) {
+    const std::size_t count = std::min(block, u.size() - start);
+    if (position == StratumPosition::random) {
+      random.fill(std::span<std::uint64_t>(bits, count));
+      for (std::size_t i = 0; i < count; ++i) offset[i] = bits_to_open_unit(bits[i]);
+    } else {
+      std::fill_n(offset, count, 0.5);
+    }
+    // Branch-free so it vectorizes: rounding may put the point on the next stratum's edge (or
+    // on 1 for the last one); it must stay strictly inside its own stratum for the
+    // one-point-per-stratum property to be exact. The largest double below the (positive)
+    // upper edge is the edge's bit pattern minus one.
+    double* out = u.data() + start;
+    const auto base = static_cast<double>(first + start);
+    for (std::size_t i = 0; i < count; ++i) {
+      // k exactly (k < 2^32); the int32 conversion vectorizes where a 64-bit one would not
+      const double k = base + static_cast<double>(static_cast<std::int32_t>(i));
+      const double lower = k * width;
+      const double upper = (k + 1.0) * width;
+      const double below_upper = std::bit_cast<double>(std::bit_cast<std::uint64_t>(upper) - 1);
+      double point = (k + offset[i]) * width;
+      point = point < below_upper ? point : below_upper;
+      point = point > lower ? point : lower;
+      out[i] = point < below_one ? point : below_one;
+    }
+  }
+}
+
+}  // namespace detail
 
 double stratum_edge(std::size_t k, std::size_t n) noexcept {
   return static_cast<double>(k) * (1.0 / static_cast<double>(n));
@@ -76,28 +112,12 @@ LatinColumn latin_hypercube_column(std::size_t n, std::uint64_t key, StratumPosi
   if (n == 0 || n > std::numeric_limits<std::uint32_t>::max()) {
     throw std::invalid_argument("latin_hypercube_column: n must be in [1, 2^32 - 1]");
   }
-  RandomStream stream(key);
+  detail::Mt19937_64Block random(key);
   LatinColumn column;
   column.stratum.resize(n);
-  std::iota(column.stratum.begin(), column.stratum.end(), std::uint32_t{0});
-  shuffle(column.stratum, stream);
-
+  detail::shuffle_strata(column.stratum, random);
   column.u_by_stratum.resize(n);
-  const double width = 1.0 / static_cast<double>(n);
-  const double below_one = std::nextafter(1.0, 0.0);
-  double lower = 0.0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const double offset = position == StratumPosition::random ? stream.uniform_open() : 0.5;
-    const double upper = static_cast<double>(k + 1) * width;
-    double u = (static_cast<double>(k) + offset) * width;
-    // Rounding may put u on the next stratum's edge (or on 1 for the last one); the point must
-    // stay strictly inside its own stratum for the one-point-per-stratum property to be exact.
-    if (u >= upper) u = std::nextafter(upper, 0.0);
-    if (u < lower) u = lower;
-    if (u > below_one) u = below_one;
-    column.u_by_stratum[k] = u;
-    lower = upper;
-  }
+  detail::stratum_points(random, n, 0, column.u_by_stratum, position);
   return column;
 }
 

@@ -1,9 +1,15 @@
 #include "growthuq/sampling/line_design.hpp"
 
 #include <algorithm>
+#include <limits>
+#include <memory>
+#include <span>
+#include <stdexcept>
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/sampling/random_stream.hpp"
+#include "sampling/large_buffer.hpp"
+#include "sampling/latin_column.hpp"
 
 namespace growthuq {
 
@@ -11,18 +17,20 @@ LineDesign latin_hypercube_design(std::string_view line_name, const std::vector<
                                   const SamplingOptions& options, const ImanConoverTarget* target) {
   const std::size_t n = options.samples;
   const std::size_t m = variables.size();
+  if (n == 0 || n > std::numeric_limits<std::uint32_t>::max()) {
+    throw std::invalid_argument("latin_hypercube_design: n must be in [1, 2^32 - 1]");
+  }
   LineDesign design;
   design.ranks.resize(m);
   design.values.resize(m);
-  // Values by stratum: the quantile of stratum k's point. The quantile is non-decreasing, so
-  // a sample's value follows from its rank by a lookup, without sorting.
-  std::vector<std::vector<double>> value_by_stratum(m);
+  // Every column's permutation first; each generator is kept where the permutation left it,
+  // to draw the stratum points after Iman-Conover (the same numbers as latin_hypercube_column).
+  std::vector<std::unique_ptr<detail::Mt19937_64Block>> random(m);
   for (std::size_t j = 0; j < m; ++j) {
     design.names.push_back(variables[j].name);
-    LatinColumn column = latin_hypercube_column(n, stream_key(options.seed, line_name, variables[j].name), options.position);
-    design.ranks[j] = std::move(column.stratum);
-    value_by_stratum[j].resize(n);
-    quantiles(variables[j].distribution, column.u_by_stratum, value_by_stratum[j]);
+    random[j] = std::make_unique<detail::Mt19937_64Block>(stream_key(options.seed, line_name, variables[j].name));
+    detail::resize_large(design.ranks[j], n);
+    detail::shuffle_strata(design.ranks[j], *random[j]);
   }
   if (target != nullptr) {
     design.target = *target;
@@ -32,13 +40,31 @@ LineDesign latin_hypercube_design(std::string_view line_name, const std::vector<
   } else {
     design.correlation.imposed = false;
   }
+  // Values by stratum: the quantile of stratum k's point, computed a block of strata at a time
+  // from the points (which never exist as a whole column). The quantile is non-decreasing, so a
+  // sample's value follows from its rank by a lookup, without sorting.
+  constexpr std::size_t block = 2048;
+  detail::LargeBuffer<double> value_by_stratum(n);
+  double points[block];
   for (std::size_t j = 0; j < m; ++j) {
-    design.values[j].resize(n);
+    for (std::size_t first = 0; first < n; first += block) {
+      const std::size_t count = std::min(block, n - first);
+      detail::stratum_points(*random[j], n, first, std::span<double>(points, count), options.position);
+      quantiles(variables[j].distribution, std::span<const double>(points, count),
+                std::span<double>(value_by_stratum.data() + first, count));
+    }
+    detail::resize_large(design.values[j], n);
     const std::uint32_t* rank = design.ranks[j].data();
-    const double* lookup = value_by_stratum[j].data();
+    const double* lookup = value_by_stratum.data();
     double* out = design.values[j].data();
-    for (std::size_t i = 0; i < n; ++i) out[i] = lookup[rank[i]];
-    std::vector<double>().swap(value_by_stratum[j]);
+    // A random gather: prefetching a fixed distance ahead keeps enough cache misses in flight.
+    constexpr std::size_t prefetch_distance = 48;
+    std::size_t i = 0;
+    for (; i + prefetch_distance < n; ++i) {
+      __builtin_prefetch(lookup + rank[i + prefetch_distance]);
+      out[i] = lookup[rank[i]];
+    }
+    for (; i < n; ++i) out[i] = lookup[rank[i]];
   }
   return design;
 }
