@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "commands.hpp"
@@ -82,8 +84,9 @@ CampaignOverrides overrides_of(const TradeoffOptions& options, const po::variabl
 // returns the folder when this run created it (removed again if the run fails).
 std::optional<fs::path> prepare_csv_path(const std::string& path, Overwrite overwrite) {
   check_can_write(path, overwrite);
-  const fs::path folder = fs::path(path).parent_path();
   std::error_code error;
+  if (fs::is_directory(path, error)) throw InputError(path, "is a directory; --out names the table file (e.g. trade.csv)");
+  const fs::path folder = fs::path(path).parent_path();
   if (folder.empty() || fs::exists(folder, error)) return std::nullopt;
   fs::create_directories(folder, error);
   if (error) throw InputError(folder.string(), "cannot create the folder of the trade-off table: " + error.message());
