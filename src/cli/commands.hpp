@@ -24,5 +24,6 @@ int run_eval(const Arguments& arguments);
 int run_correlate(const Arguments& arguments);
 int run_relax(const Arguments& arguments);
 int run_run(const Arguments& arguments);
+int run_tradeoff(const Arguments& arguments);
 
 }  // namespace growthuq::cli

@@ -19,6 +19,7 @@ constexpr std::array commands{
     Command{"correlate", "rank correlation of (k, h, d, d0) from the forward mechanics", growthuq::cli::run_correlate},
     Command{"relax", "fit generalized Maxwell series to force-relaxation curves", growthuq::cli::run_relax},
     Command{"run", "run a campaign: plant lines through the models, summaries and result files", growthuq::cli::run_run},
+    Command{"tradeoff", "measured speed/accuracy trade of a campaign over sample counts", growthuq::cli::run_tradeoff},
 };
 
 void print_usage(std::ostream& out) {

@@ -1,0 +1,76 @@
+#include "growthuq/campaign/tradeoff_run.hpp"
+
+#include <chrono>
+
+#include "growthuq/campaign/campaign_run.hpp"
+#include "growthuq/stats/quantity_summary.hpp"
+
+namespace growthuq {
+namespace {
+
+// Keeps each finished line's summaries (the rows summary.csv would hold) and drops its samples.
+class SummaryObserver final : public RunObserver {
+ public:
+  SummaryObserver(const PreparedCampaign& campaign, ProgressMode progress, std::ostream& log)
+      : campaign_(campaign), log_(log), progress_(progress, log, campaign.campaign().samples * campaign.lines().size()) {}
+
+  void line_started(const PreparedLine& line, std::size_t samples) override {
+    progress_.line_started(line.campaign_line.name, samples);
+  }
+
+  void chunk_done(ChunkRange range) override { progress_.advance(range.end - range.begin); }
+
+  void line_done(const LineResult& result, const std::vector<std::string>& warnings) override {
+    progress_.line_finished();
+    for (const std::string& warning : warnings) {
+      log_ << "growthuq tradeoff: line '" << result.name << "' at " << result.samples() << " samples: " << warning << "\n";
+    }
+    for (const std::string& output : campaign_.campaign().outputs) {
+      for (const ResultColumn& column : result.columns) {
+        if (column.quantity == output) summaries_.push_back(summarize_quantity(result.name, column, result.status));
+      }
+    }
+  }
+
+  std::vector<QuantitySummary> take_summaries() { return std::move(summaries_); }
+
+ private:
+  const PreparedCampaign& campaign_;
+  std::ostream& log_;
+  Progress progress_;
+  std::vector<QuantitySummary> summaries_;
+};
+
+}  // namespace
+
+std::string fidelity_label(Fidelity fidelity) {
+  switch (fidelity) {
+    case Fidelity::thin_shell:
+      return "analytic";
+  }
+  return "unknown";
+}
+
+std::vector<TradeoffRun> run_tradeoff(const Campaign& campaign, std::span<const std::size_t> sample_counts, Pool& pool,
+                                      ProgressMode progress, std::ostream& log) {
+  using Clock = std::chrono::steady_clock;
+  std::vector<TradeoffRun> runs;
+  for (const std::size_t samples : sample_counts) {
+    if (progress != ProgressMode::none) log << "tradeoff: " << samples << " samples per line\n" << std::flush;
+    const Clock::time_point start = Clock::now();
+    Campaign at_count = campaign;
+    at_count.samples = samples;
+    const PreparedCampaign prepared(std::move(at_count));
+    SummaryObserver observer(prepared, progress, log);
+    run_campaign_lines(prepared, pool, observer);
+    TradeoffRun run;
+    run.fidelity = fidelity_label(campaign.fidelity);
+    run.samples = samples;
+    run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    run.summaries = observer.take_summaries();
+    runs.push_back(std::move(run));
+  }
+  return runs;
+}
+
+}  // namespace growthuq
