@@ -198,8 +198,10 @@ TEST_CASE("tradeoff verdict: worst errors per count, the smallest count meeting 
 }
 
 TEST_CASE("tradeoff of a real campaign: errors fall with n and the median's 95 % interval covers the reference") {
-  // campaigns/quick.ini: five lines x p, E, eta, v. Counts up to 1e5 (the reference).
+  // campaigns/quick.ini: five lines x its outputs (p, E, eta, v, v_exp). Counts up to 1e5 (the
+  // reference).
   const Campaign campaign = read_campaign(std::string(GROWTHUQ_SOURCE_DIR) + "/campaigns/quick.ini");
+  const std::size_t rows_per_run = campaign.lines.size() * campaign.outputs.size();
   const std::vector<std::size_t> counts{100, 1000, 10000, 100000};
   const std::unique_ptr<Pool> pool = make_serial_pool();
   std::ostringstream log;
@@ -210,7 +212,7 @@ TEST_CASE("tradeoff of a real campaign: errors fall with n and the median's 95 %
     CHECK(runs[i].fidelity == "analytic");
     CHECK(runs[i].samples == counts[i]);
     CHECK(runs[i].seconds > 0);
-    REQUIRE(runs[i].summaries.size() == 20);
+    REQUIRE(runs[i].summaries.size() == rows_per_run);
   }
   const std::vector<TradeoffRow> rows = tradeoff_rows(runs);
   const TradeoffVerdict verdict = judge_tradeoff(rows, "analytic", 1);
@@ -223,14 +225,14 @@ TEST_CASE("tradeoff of a real campaign: errors fall with n and the median's 95 %
   // hypercube estimates a median at least as well as independent sampling, so the interval should
   // contain the true median in about 95 % or more of the rows; the 1e5 run's median stands in for
   // the truth, and it is itself off by about a third of a 1e4 run's half-width. 80 % leaves room
-  // for both and for the 60 rows not being independent (four quantities of one line share samples).
+  // for both and for the rows not being independent (the quantities of one line share samples).
   std::size_t covered = 0, total = 0;
   for (const TradeoffRow& row : rows) {
     if (row.samples > 10000) continue;
     ++total;
     if (row.median_ci_low <= row.reference_median && row.reference_median <= row.median_ci_high) ++covered;
   }
-  REQUIRE(total == 60);
+  REQUIRE(total == 3 * rows_per_run);
   const double coverage = static_cast<double>(covered) / static_cast<double>(total);
   MESSAGE("95 % intervals of the median containing the 1e5-sample median: " << covered << " of " << total);
   CHECK(coverage >= 0.8);
