@@ -31,7 +31,8 @@ std::string in_directory(const std::string& directory, const char* name) { retur
 // `path` as a shell word, quoted when it holds anything but letters, digits and _ . / - : the
 // messages give a command to paste.
 std::string shell_word(const std::string& path) {
-  const bool plain = !path.empty() && path.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_./-") == std::string::npos;
+  constexpr std::string_view safe = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_./-";
+  const bool plain = !path.empty() && path.find_first_not_of(safe) == std::string::npos;
   if (plain) return path;
   std::string quoted = "'";
   for (const char c : path) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);

@@ -60,20 +60,26 @@ std::string command_line_of(const Arguments& arguments) {
 // --resume takes everything that decides the result from the checkpoint; an option that could
 // change it is refused rather than silently ignored or applied.
 void check_resume_options(const RunOptions& options, const po::variables_map& values) {
-  if (options.resume.empty()) {
-    if (options.campaign.empty()) throw InputError(std::string(location), "expected a campaign file (growthuq run CAMPAIGN.ini) or --resume DIR");
+  const std::string where(location);
+  if (!values.count("resume")) {
+    if (options.campaign.empty()) throw InputError(where, "expected a campaign file (growthuq run CAMPAIGN.ini) or --resume DIR");
     return;
   }
   if (!options.campaign.empty()) {
-    throw InputError(std::string(location), "give a campaign file or --resume DIR, not both: the resumed run uses the campaign stored in its checkpoint");
+    throw InputError(where, "give a campaign file or --resume DIR, not both: the resumed run uses the campaign stored in its checkpoint");
   }
   for (const char* option : {"samples", "seed", "out", "lines", "formats"}) {
     if (values.count(option)) {
-      throw InputError(std::string(location), std::string("--") + option + " cannot be combined with --resume: the resumed run keeps the settings of the interrupted one, so that its results are the same");
+      throw InputError(where, std::string("--") + option +
+                                  " cannot be combined with --resume: the resumed run keeps the settings of the interrupted "
+                                  "one, so that its results are the same");
     }
   }
-  if (options.force) throw InputError(std::string(location), "--force cannot be combined with --resume (to start the run again instead, run the campaign with --force --out DIR)");
-  if (options.no_checkpoint) throw InputError(std::string(location), "--no-checkpoint cannot be combined with --resume");
+  if (options.force) {
+    throw InputError(where, "--force cannot be combined with --resume (to start the run again instead, run the campaign "
+                            "with --force --out DIR)");
+  }
+  if (options.no_checkpoint) throw InputError(where, "--no-checkpoint cannot be combined with --resume");
 }
 
 // The checkpoint's campaign, after rank 0 has checked that nothing it read has changed.
@@ -97,7 +103,7 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
   settings.overwrite = options.force ? Overwrite::allow : Overwrite::refuse;
   settings.progress = pool.is_coordinator() ? choose_progress_mode(options.quiet) : ProgressMode::none;
   std::optional<PreparedCampaign> prepared;
-  if (!options.resume.empty()) {
+  if (values.count("resume")) {
     prepared.emplace(resumed(options.resume, pool, settings));
   } else {
     // Rank 0 reads the file so that every process validates exactly the same text.
@@ -114,7 +120,9 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
     settings.command_line = command_line_of(arguments);
     if (!options.no_checkpoint) {
       settings.checkpointing = Checkpointing::start;
-      on_coordinator(pool, [&] { settings.manifest = make_checkpoint_manifest(prepared->campaign(), overrides, settings.command_line); });
+      on_coordinator(pool, [&] {
+        settings.manifest = make_checkpoint_manifest(prepared->campaign(), overrides, settings.command_line);
+      });
     }
   }
 
