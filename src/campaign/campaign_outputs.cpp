@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "growthuq/campaign/campaign_report.hpp"
+#include "growthuq/campaign/checkpoint.hpp"
 #include "growthuq/campaign/csv_results.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -27,11 +28,26 @@ std::string format_significant(double value) {
 
 std::string in_directory(const std::string& directory, const char* name) { return (fs::path(directory) / name).string(); }
 
+// `path` as a shell word, quoted when it holds anything but letters, digits and _ . / - : the
+// messages give a command to paste.
+std::string shell_word(const std::string& path) {
+  constexpr std::string_view safe = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_./-";
+  const bool plain = !path.empty() && path.find_first_not_of(safe) == std::string::npos;
+  if (plain) return path;
+  std::string quoted = "'";
+  for (const char c : path) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
 // Returns whether the directory was created by this run.
 bool prepare_output_directory(const Campaign& campaign, Overwrite overwrite) {
   const std::string& directory = campaign.output_dir;
   std::error_code error;
   if (fs::exists(directory, error)) {
+    if (overwrite == Overwrite::refuse && has_checkpoint(directory)) {
+      throw InputError(directory, "holds an interrupted run; finish it with: growthuq run --resume " + shell_word(directory) +
+                                      " (or pass --force to start it again)");
+    }
     if (overwrite == Overwrite::refuse) {
       throw InputError(directory, "output directory already exists; choose another (--out DIR) or pass --force to replace its results");
     }
@@ -123,8 +139,9 @@ class OutputObserver final : public RunObserver {
 
   const std::vector<QuantitySummary>& summaries() const { return summaries_; }
 
-  // After a failure: closes the writers, which remove their .partial files.
+  // After a failure or a stop: closes the writers, which remove their .partial files.
   void abandon() {
+    progress_.stopped();
     samples_.reset();
     h5_.reset();
   }
@@ -144,20 +161,49 @@ class OutputObserver final : public RunObserver {
 CampaignOutcome run_campaign_with_outputs(const PreparedCampaign& campaign, Pool& pool, const OutputSettings& settings,
                                           std::ostream& report, std::ostream& log) {
   OutputObserver observer(campaign, settings, log);
+  const bool resuming = settings.checkpointing == Checkpointing::resume;
   bool created = false;
+  std::unique_ptr<RunCheckpoint> checkpoint;
+  bool starting_checkpoint = false;
   CampaignOutcome outcome;
   try {
     on_coordinator(pool, [&] {
-      created = prepare_output_directory(campaign.campaign(), settings.overwrite);
+      created = prepare_output_directory(campaign.campaign(), resuming ? Overwrite::allow : settings.overwrite);
       observer.open(campaign);
     });
-    outcome.run = run_campaign_lines(campaign, pool, observer);
-    on_coordinator(pool, [&] { observer.finish(outcome, settings, report); });
+    if (settings.checkpointing == Checkpointing::start) {
+      starting_checkpoint = true;  // from here the checkpoint directory is this run's
+      checkpoint = RunCheckpoint::start(pool, campaign, settings.manifest);
+    }
+    if (resuming) checkpoint = RunCheckpoint::resume(pool, campaign);
+    outcome.run = run_campaign_lines(campaign, pool, observer, checkpoint.get());
+    on_coordinator(pool, [&] {
+      observer.finish(outcome, settings, report);
+      if (checkpoint) checkpoint->remove();
+    });
+  } catch (const PoolInterrupted& interrupted) {
+    observer.abandon();
+    const std::string& directory = campaign.campaign().output_dir;
+    if (!checkpoint) {
+      std::error_code ignored;
+      if (created) fs::remove(directory, ignored);
+      throw RunInterrupted(interrupted.reason(), "interrupted; nothing was kept to resume (--no-checkpoint)");
+    }
+    const std::size_t total = campaign.campaign().samples * campaign.lines().size();
+    throw RunInterrupted(interrupted.reason(), "interrupted after " + std::to_string(checkpoint->samples_held()) + " of " +
+                                                   std::to_string(total) + " samples; finish with: growthuq run --resume " +
+                                                   shell_word(directory));
   } catch (...) {
     // A failed run leaves no output directory of its own making behind (an empty one would
-    // only make the rerun need --force); finished files of a forced directory stay.
+    // only make the rerun need --force); finished files of a forced directory stay. A resume
+    // would fail the same way, so a new run's checkpoint goes too; a resumed run keeps the
+    // chunks an earlier run paid for.
     observer.abandon();
+    checkpoint.reset();
     std::error_code ignored;
+    if (starting_checkpoint && pool.is_coordinator()) {
+      fs::remove_all(checkpoint_directory(campaign.campaign().output_dir), ignored);
+    }
     if (created) fs::remove(campaign.campaign().output_dir, ignored);
     throw;
   }

@@ -233,11 +233,12 @@ void apply_kappa(LineResult& result, double kappa) {
 
 }  // namespace
 
-RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunObserver& observer) {
+RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunObserver& observer, ChunkJournal* journal) {
   RunOutcome outcome;
   const std::size_t n = campaign.campaign().samples;
   const std::size_t outputs = campaign.computed_outputs().size();
-  for (const PreparedLine& line : campaign.lines()) {
+  for (std::size_t index = 0; index < campaign.lines().size(); ++index) {
+    const PreparedLine& line = campaign.lines()[index];
     if (pool.is_coordinator()) observer.line_started(line, n);
     const LineDesign design = campaign.design(line);
     std::optional<LineResult> result;
@@ -259,7 +260,17 @@ RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunO
       }
       observer.chunk_done(range);
     };
-    pool.run(n, campaign.campaign().chunk_size, work, sink);
+    if (journal == nullptr) {
+      pool.run(n, campaign.campaign().chunk_size, work, sink);
+    } else {
+      on_coordinator(pool, [&] { journal->replay(index, sink); });  // a read error stops every process
+      const ChunkSink record_then_sink = [&](ChunkRange range, std::span<const double> values) {
+        journal->record(index, range, values);
+        sink(range, values);
+      };
+      pool.run(n, campaign.campaign().chunk_size, work, record_then_sink,
+               [&](ChunkRange range) { return journal->holds(index, range); });
+    }
 
     const bool is_reference = campaign.calibrates_kappa() && line.campaign_line.name == campaign.campaign().reference_line;
     if (is_reference) {

@@ -64,6 +64,10 @@ void Progress::line_finished() {
   }
 }
 
+void Progress::stopped() {
+  if (mode_ == ProgressMode::bar) out_ << "\r\033[K" << std::flush;
+}
+
 void Progress::draw_bar(bool force) {
   if (mode_ != ProgressMode::bar) return;
   const Clock::time_point now = Clock::now();

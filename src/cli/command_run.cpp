@@ -1,17 +1,23 @@
 // growthuq run: a whole campaign (campaign_file.hpp) through the evaluation pool, serially or
 // under mpirun, writing samples.csv, summary.csv and results.h5 into the output directory and
 // a readable summary on stdout. Every process validates the same campaign text (rank 0 reads
-// the file and broadcasts it); only rank 0 prints.
+// the file, or the checkpoint manifest with --resume, and broadcasts it); only rank 0 prints.
+// Ctrl-C or SIGTERM stops the run after the chunks under way; the checkpoint keeps every
+// finished chunk for `growthuq run --resume DIR`.
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "commands.hpp"
 #include "growthuq/campaign/campaign_file.hpp"
 #include "growthuq/campaign/campaign_outputs.hpp"
 #include "growthuq/campaign/campaign_run.hpp"
+#include "growthuq/campaign/checkpoint.hpp"
+#include "growthuq/campaign/checkpoint_manifest.hpp"
 #include "growthuq/campaign/progress.hpp"
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/interrupt.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/pool/pool.hpp"
 #include "options.hpp"
@@ -27,8 +33,10 @@ struct RunOptions {
   std::string out;
   std::string lines;
   std::string formats;
+  std::string resume;  // output directory of an interrupted run
   bool force = false;
   bool quiet = false;
+  bool no_checkpoint = false;
 };
 
 constexpr std::string_view location = "growthuq run";
@@ -49,23 +57,85 @@ std::string command_line_of(const Arguments& arguments) {
   return text;
 }
 
-int run_campaign_command(const RunOptions& options, const po::variables_map& values, const Arguments& arguments, Pool& pool) {
-  // Rank 0 reads the file so that every process validates exactly the same text.
+// --resume takes everything that decides the result from the checkpoint; an option that could
+// change it is refused rather than silently ignored or applied.
+void check_resume_options(const RunOptions& options, const po::variables_map& values) {
+  const std::string where(location);
+  if (!values.count("resume")) {
+    if (options.campaign.empty()) throw InputError(where, "expected a campaign file (growthuq run CAMPAIGN.ini) or --resume DIR");
+    return;
+  }
+  if (!options.campaign.empty()) {
+    throw InputError(where, "give a campaign file or --resume DIR, not both: the resumed run uses the campaign stored in its checkpoint");
+  }
+  for (const char* option : {"samples", "seed", "out", "lines", "formats"}) {
+    if (values.count(option)) {
+      throw InputError(where, std::string("--") + option +
+                                  " cannot be combined with --resume: the resumed run keeps the settings of the interrupted "
+                                  "one, so that its results are the same");
+    }
+  }
+  if (options.force) {
+    throw InputError(where, "--force cannot be combined with --resume (to start the run again instead, run the campaign "
+                            "with --force --out DIR)");
+  }
+  if (options.no_checkpoint) throw InputError(where, "--no-checkpoint cannot be combined with --resume");
+}
+
+// The checkpoint's campaign, after rank 0 has checked that nothing it read has changed.
+Campaign resumed(const std::string& directory, Pool& pool, OutputSettings& settings) {
+  const std::string manifest_path = checkpoint_manifest_path(directory);
   std::string text;
   on_coordinator(pool, [&] {
-    Campaign probe = read_campaign(options.campaign);
-    text = std::move(probe.text);
+    text = read_checkpoint_manifest_text(directory);
+    verify_manifest(parse_manifest(text, manifest_path), manifest_path);
   });
   text = pool.broadcast(text);
-  Campaign campaign = parse_campaign(text, options.campaign);
-  apply_overrides(campaign, overrides_of(options, values));
-  const PreparedCampaign prepared(std::move(campaign));
+  const CheckpointManifest manifest = parse_manifest(text, manifest_path);
+  settings.command_line = manifest.command_line;  // results.h5 as the uninterrupted run writes it
+  settings.checkpointing = Checkpointing::resume;
+  return resumed_campaign(manifest, directory);
+}
 
+int run_campaign_command(const RunOptions& options, const po::variables_map& values, const Arguments& arguments, Pool& pool) {
+  check_resume_options(options, values);
   OutputSettings settings;
   settings.overwrite = options.force ? Overwrite::allow : Overwrite::refuse;
   settings.progress = pool.is_coordinator() ? choose_progress_mode(options.quiet) : ProgressMode::none;
-  settings.command_line = command_line_of(arguments);
-  run_campaign_with_outputs(prepared, pool, settings, std::cout, std::cerr);
+  std::optional<PreparedCampaign> prepared;
+  if (values.count("resume")) {
+    prepared.emplace(resumed(options.resume, pool, settings));
+  } else {
+    // Rank 0 reads the file so that every process validates exactly the same text.
+    std::string text;
+    on_coordinator(pool, [&] {
+      Campaign probe = read_campaign(options.campaign);
+      text = std::move(probe.text);
+    });
+    text = pool.broadcast(text);
+    Campaign campaign = parse_campaign(text, options.campaign);
+    const CampaignOverrides overrides = overrides_of(options, values);
+    apply_overrides(campaign, overrides);
+    prepared.emplace(std::move(campaign));
+    settings.command_line = command_line_of(arguments);
+    if (!options.no_checkpoint) {
+      settings.checkpointing = Checkpointing::start;
+      on_coordinator(pool, [&] {
+        settings.manifest = make_checkpoint_manifest(prepared->campaign(), overrides, settings.command_line);
+      });
+    }
+  }
+
+  // From here a first Ctrl-C or SIGTERM stops the pool at the next chunk (the coordinator's
+  // signal decides for every process); a second one ends the process.
+  const InterruptHandlers handlers;
+  pool.stop_when([] { return interrupt_signal(); });
+  try {
+    run_campaign_with_outputs(*prepared, pool, settings, std::cout, std::cerr);
+  } catch (const RunInterrupted& interrupted) {
+    if (pool.is_coordinator()) std::cerr << "growthuq run: " << interrupted.what() << "\n";
+    return exit_status_of_signal(interrupted.reason());
+  }
   return 0;
 }
 
@@ -75,18 +145,22 @@ int run_run(const Arguments& arguments) {
   RunOptions options;
   po::options_description described("options");
   described.add_options()
-      ("campaign", po::value(&options.campaign)->required(), "campaign file (INI; relative paths in it start at its folder)")
+      ("campaign", po::value(&options.campaign), "campaign file (INI; relative paths in it start at its folder)")
       ("samples", po::value(&options.samples), "samples per line (overrides [campaign] samples)")
       ("seed", po::value(&options.seed), "campaign seed, 0 to 2^64 - 1 (overrides [campaign] seed)")
       ("out", po::value(&options.out), "output directory (overrides [campaign] output_dir)")
       ("lines", po::value(&options.lines), "comma-separated subset of the campaign's lines (keep the reference line)")
       ("formats", po::value(&options.formats), "csv, hdf5 or csv,hdf5 (summary.csv is always written)")
       ("force", po::bool_switch(&options.force), "reuse an existing output directory, replacing its results")
-      ("quiet", po::bool_switch(&options.quiet), "no progress on stderr");
+      ("quiet", po::bool_switch(&options.quiet), "no progress on stderr")
+      ("resume", po::value(&options.resume)->value_name("DIR"),
+       "finish the interrupted run whose output directory is DIR (no campaign file: it is in DIR/checkpoint)")
+      ("no-checkpoint", po::bool_switch(&options.no_checkpoint),
+       "do not keep finished chunks in DIR/checkpoint (an interrupted run cannot be resumed)");
   po::positional_options_description positional;
   positional.add("campaign", 1);
   po::variables_map values;
-  if (!parse_arguments(arguments, "run", "CAMPAIGN.ini [options]",
+  if (!parse_arguments(arguments, "run", "CAMPAIGN.ini [options]  |  growthuq run --resume DIR [--quiet]",
                        "Runs a campaign: for each plant line, a correlated Latin hypercube design through the\n"
                        "thin-shell and growth models, in chunks over all processes (mpirun -np K growthuq run ...\n"
                        "gives bit-identical results for any K). Writes samples.csv (one row per sample; flagged\n"
@@ -94,7 +168,13 @@ int run_run(const Arguments& arguments) {
                        "confidence interval of the median per line and quantity) and results.h5 into the output\n"
                        "directory, which must not exist unless --force is given. Growth rates are scaled by kappa,\n"
                        "calibrated so the reference line's predicted median equals its experimental median.\n"
-                       "Progress goes to stderr (a bar on a terminal, a line per plant line otherwise).",
+                       "Progress goes to stderr (a bar on a terminal, a line per plant line otherwise).\n\n"
+                       "Every finished chunk is kept in DIR/checkpoint (removed when the run completes). Ctrl-C or\n"
+                       "SIGTERM stops the run once the chunks under way are done (a second one ends it at once;\n"
+                       "kept chunks survive even that), writes no result file, keeps DIR and exits with 130 or\n"
+                       "143; 'growthuq run --resume DIR' (any number of processes) then evaluates only the rest\n"
+                       "and writes results byte-identical to an uninterrupted run. It refuses to resume when a\n"
+                       "line or matrix file changed since, or with options that would change the results.",
                        described, positional, values)) {
     return 0;
   }

@@ -37,6 +37,16 @@ std::uint64_t parse_count(std::string_view text, std::string_view location, std:
                           std::uint64_t minimum, std::uint64_t maximum) {
   const std::string expected = "a whole number from " + std::to_string(minimum) + " to " +
                                std::to_string(maximum);
+  // Plain digits are read exactly: through a double, seeds above 2^53 would silently change.
+  const std::string_view digits = trim(text);
+  if (!digits.empty() && digits.find_first_not_of("0123456789") == std::string_view::npos) {
+    std::uint64_t count = 0;
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), count);
+    if (error != std::errc() || end != digits.data() + digits.size() || count < minimum || count > maximum) {
+      throw_bad_value(location, key, text, expected);
+    }
+    return count;
+  }
   const auto value = try_parse_double(text);
   // 2^64 is exactly representable; anything at or above it cannot be a uint64.
   if (!value || *value < 0.0 || *value != std::floor(*value) || *value >= 18446744073709551616.0) {

@@ -54,11 +54,31 @@ void write_f64_attribute(H5::H5Object& object, const std::string& name, double v
   attribute.write(H5::PredType::NATIVE_DOUBLE, &value);
 }
 
+// Objects are created without modification times (HDF5 tracks them by default), so the same
+// campaign gives a byte-identical file whenever it runs, and a resumed run (checkpoint.hpp) the
+// same file as an uninterrupted one.
+H5::DSetCreatPropList untimed_dataset() {
+  H5::DSetCreatPropList properties;
+  H5Pset_obj_track_times(properties.getId(), false);
+  return properties;
+}
+
+H5::Group create_untimed_group(const H5::H5Location& parent, const std::string& name) {
+  const hid_t properties = H5Pcreate(H5P_GROUP_CREATE);
+  H5Pset_obj_track_times(properties, false);
+  const hid_t id = H5Gcreate2(parent.getId(), name.c_str(), H5P_DEFAULT, properties, H5P_DEFAULT);
+  H5Pclose(properties);
+  if (id < 0) throw H5::GroupIException("create_untimed_group", "H5Gcreate2 failed for " + name);
+  H5::Group group(id);  // takes its own reference
+  H5Gclose(id);
+  return group;
+}
+
 template <typename T>
 H5::DataSet write_vector(H5::Group& group, const std::string& name, const H5::PredType& file_type,
                          const H5::PredType& memory_type, const std::vector<T>& values) {
   const hsize_t size = values.size();
-  H5::DataSet dataset = group.createDataSet(name, file_type, H5::DataSpace(1, &size));
+  H5::DataSet dataset = group.createDataSet(name, file_type, H5::DataSpace(1, &size), untimed_dataset());
   if (!values.empty()) dataset.write(values.data(), memory_type);
   return dataset;
 }
@@ -66,7 +86,7 @@ H5::DataSet write_vector(H5::Group& group, const std::string& name, const H5::Pr
 // A matrix as a 2-D row-major dataset (HDF5's and numpy's order; Eigen's default is column-major).
 H5::DataSet write_matrix(H5::Group& group, const std::string& name, const Eigen::MatrixXd& matrix) {
   const hsize_t dims[2] = {static_cast<hsize_t>(matrix.rows()), static_cast<hsize_t>(matrix.cols())};
-  H5::DataSet dataset = group.createDataSet(name, H5::PredType::IEEE_F64LE, H5::DataSpace(2, dims));
+  H5::DataSet dataset = group.createDataSet(name, H5::PredType::IEEE_F64LE, H5::DataSpace(2, dims), untimed_dataset());
   const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> row_major = matrix;
   if (row_major.size() > 0) dataset.write(row_major.data(), H5::PredType::NATIVE_DOUBLE);
   return dataset;
@@ -74,7 +94,7 @@ H5::DataSet write_matrix(H5::Group& group, const std::string& name, const Eigen:
 
 H5::DataSet write_vector(H5::Group& group, const std::string& name, const Eigen::VectorXd& vector) {
   const hsize_t size = static_cast<hsize_t>(vector.size());
-  H5::DataSet dataset = group.createDataSet(name, H5::PredType::IEEE_F64LE, H5::DataSpace(1, &size));
+  H5::DataSet dataset = group.createDataSet(name, H5::PredType::IEEE_F64LE, H5::DataSpace(1, &size), untimed_dataset());
   if (vector.size() > 0) dataset.write(vector.data(), H5::PredType::NATIVE_DOUBLE);
   return dataset;
 }
@@ -112,7 +132,7 @@ void write_summary(H5::Group& group, const std::string& name, const std::vector<
                     s.iqr, s.p10, s.p90, s.mean, s.sd, s.median_ci_low, s.median_ci_high});
   }
   const hsize_t size = rows.size();
-  H5::DataSet dataset = group.createDataSet(name, memory, H5::DataSpace(1, &size));
+  H5::DataSet dataset = group.createDataSet(name, memory, H5::DataSpace(1, &size), untimed_dataset());
   if (!rows.empty()) dataset.write(rows.data(), memory);
 }
 
@@ -149,7 +169,7 @@ ResultsH5Writer::ResultsH5Writer(std::string path, Overwrite overwrite)
   const std::string partial = path_ + ".partial";
   try {
     file_ = std::make_unique<File>(File{partial, H5::H5File(partial, H5F_ACC_TRUNC)});
-    H5::Group lines = file_->file.createGroup("lines");
+    create_untimed_group(file_->file, "lines");
   } catch (const H5::Exception& error) {
     file_.reset();
     std::remove(partial.c_str());
@@ -173,7 +193,7 @@ void ResultsH5Writer::write_line(const LineResult& result, const std::vector<Qua
     }
   }
   try {
-    H5::Group group = file_->file.createGroup("lines/" + result.name);
+    H5::Group group = create_untimed_group(file_->file, "lines/" + result.name);
     write_u64_attribute(group, "samples", samples);
     for (const ResultColumn& column : result.columns) {
       H5::DataSet dataset = write_vector(group, column.column_name(), H5::PredType::IEEE_F64LE,
@@ -192,12 +212,12 @@ void ResultsH5Writer::write_line(const LineResult& result, const std::vector<Qua
 
     write_summary(group, "summary", summaries);
 
-    H5::Group correlation = group.createGroup("input_rank_correlation");
+    H5::Group correlation = create_untimed_group(group, "input_rank_correlation");
     write_strings_attribute(correlation, "names", result.correlated_inputs);
     write_matrix(correlation, "achieved", result.achieved_spearman);
     if (result.target_spearman.size() > 0) write_matrix(correlation, "target", result.target_spearman);
 
-    H5::Group analysis_group = group.createGroup("analysis");
+    H5::Group analysis_group = create_untimed_group(group, "analysis");
     write_u64_attribute(analysis_group, "samples_used", analysis.samples_used);
     write_strings_attribute(analysis_group, "notes", analysis.notes);
     H5::DataSet spearman = write_matrix(analysis_group, "input_output_spearman", analysis.input_output_spearman);

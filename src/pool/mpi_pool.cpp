@@ -5,8 +5,10 @@
 // computes chunks itself between serving messages. A worker answers each ASSIGN with a RESULT
 // (chunk index + values) or a FAILURE (chunk index + reason). When everything is sunk, or after
 // the first failure, rank 0 sends STOP to every worker and drains messages until each worker
-// has said DONE, so no send is left pending (no hang at exit). Finally rank 0 broadcasts the
-// outcome and every rank returns or throws the same PoolError.
+// has said DONE, so no send is left pending (no hang at exit). A stop request (Pool::stop_when,
+// polled on rank 0 only) ends the handing out: rank 0 waits for the chunks in flight, sinks
+// them, and stops the workers the same way. Finally rank 0 broadcasts the outcome ("" done,
+// "F<reason>" failed, "S<request>" stopped) and every rank returns or throws the same.
 #include <mpi.h>
 
 #include <cstdint>
@@ -55,9 +57,10 @@ class MpiPool final : public Pool {
     for (std::uint64_t i = 0; i < all.size(); ++i) {
       if (!skip || !skip(all[i])) todo.push_back(i);
     }
-    std::string failure = rank_ == 0 ? coordinate(all, todo, work, sink) : serve(all, work);
-    failure = broadcast(failure);
-    if (!failure.empty()) throw PoolError(failure);
+    const std::string outcome = broadcast(rank_ == 0 ? coordinate(all, todo, work, sink) : serve(all, work));
+    if (outcome.empty()) return;
+    if (outcome.front() == 'S') throw PoolInterrupted(std::stoi(outcome.substr(1)));
+    throw PoolError(outcome.substr(1));
   }
 
   std::string broadcast(const std::string& text) override {
@@ -69,16 +72,27 @@ class MpiPool final : public Pool {
   }
 
  private:
-  // Rank 0: hands out chunks, computes chunks itself, sinks results. Returns the failure text.
+  // Rank 0: hands out chunks, computes chunks itself, sinks results. Returns the outcome.
   std::string coordinate(const std::vector<ChunkRange>& all, const std::vector<std::uint64_t>& todo,
                          const ChunkWork& work, const ChunkSink& sink) {
-    std::size_t next = 0;
-    std::size_t sunk = 0;
+    std::size_t next = 0;  // chunks handed out (to workers or to rank 0 itself)
+    std::size_t sunk = 0;  // chunks back (sunk or failed)
     std::string failure;
+    int stop = stop_requested();
+    auto handing_out = [&] { return failure.empty() && stop == 0 && next < todo.size(); };
     auto assign_next = [&](int worker) {
-      if (!failure.empty() || next >= todo.size()) return;
+      if (!handing_out()) return;
       MPI_Send(&todo[next], 1, MPI_UINT64_T, worker, assign_tag, MPI_COMM_WORLD);
       ++next;
+    };
+    // A sink that throws (the checkpoint cannot be written) fails the run like a chunk does;
+    // escaping here would leave the workers waiting.
+    auto sink_safely = [&](ChunkRange range, std::span<const double> values) {
+      try {
+        sink(range, values);
+      } catch (const std::exception& error) {
+        if (failure.empty()) failure = "rank 0 could not keep items [" + std::to_string(range.begin) + ", " + std::to_string(range.end) + "): " + error.what();
+      }
     };
     for (int round = 0; round < 2; ++round) {
       for (int worker = 1; worker < size_; ++worker) assign_next(worker);
@@ -92,7 +106,7 @@ class MpiPool final : public Pool {
         buffer.resize(static_cast<std::size_t>(length));
         MPI_Recv(buffer.data(), length, MPI_DOUBLE, status.MPI_SOURCE, result_tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
         const auto index = static_cast<std::size_t>(buffer.front());
-        if (failure.empty()) sink(all[index], std::span<const double>(buffer).subspan(1));
+        if (failure.empty()) sink_safely(all[index], std::span<const double>(buffer).subspan(1));
         ++sunk;
         assign_next(status.MPI_SOURCE);
       } else if (status.MPI_TAG == failure_tag) {
@@ -104,20 +118,25 @@ class MpiPool final : public Pool {
       }
     };
 
-    while (failure.empty() && sunk < todo.size()) {
+    for (;;) {
+      if (stop == 0) stop = stop_requested();
+      // Decided once per pass: blocking below is safe only while chunks are in flight.
+      const bool more = handing_out();
+      if (!failure.empty() || (!more && sunk == next)) break;
       int pending = 0;
       MPI_Status status;
       MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &pending, &status);
       if (pending) {
         handle_message(status);
-      } else if (next < todo.size()) {
+      } else if (more) {
         const ChunkRange range = all[todo[next++]];
+        std::vector<double> values;
         try {
-          const std::vector<double> values = work(range);
-          sink(range, values);
+          values = work(range);
         } catch (const std::exception& error) {
           failure = describe_failure(0, range, error.what());
         }
+        if (failure.empty()) sink_safely(range, values);
         ++sunk;
       } else {
         MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
@@ -137,7 +156,8 @@ class MpiPool final : public Pool {
         handle_message(status);
       }
     }
-    return failure;
+    if (!failure.empty()) return "F" + failure;
+    return stop != 0 && sunk < todo.size() ? "S" + std::to_string(stop) : std::string();
   }
 
   // Ranks > 0: compute assigned chunks until STOP. Returns "" (rank 0 reports failures).

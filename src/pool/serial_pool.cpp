@@ -26,6 +26,7 @@ class SerialPool final : public Pool {
            const std::function<bool(ChunkRange)>& skip) override {
     for (const ChunkRange range : split_into_chunks(count, chunk_size)) {
       if (skip && skip(range)) continue;
+      if (const int reason = stop_requested()) throw PoolInterrupted(reason);
       std::vector<double> values;
       try {
         values = work(range);

@@ -29,6 +29,10 @@ TEST_CASE("parse_count checks range and integrality") {
   CHECK_THROWS_AS(parse_count("2.5", "", "--samples"), InputError);
   CHECK_THROWS_AS(parse_count("-1", "", "--samples"), InputError);
   CHECK_THROWS_AS(parse_count("5", "", "--samples", 10, 20), InputError);
+  // Digits are exact over the whole uint64 range (2^53 + 1 has no double).
+  CHECK(parse_count("9007199254740993", "", "--seed") == 9007199254740993ULL);
+  CHECK(parse_count(" 18446744073709551615 ", "", "--seed") == 18446744073709551615ULL);
+  CHECK_THROWS_AS(parse_count("18446744073709551616", "", "--seed"), InputError);
 }
 
 TEST_CASE("format_double round-trips exactly") {

@@ -1,6 +1,7 @@
 // Runs under `mpirun -np K` (CTest registers K = 1, 2, 3): the MPI pool must give results
 // bit-identical to a serial computation whatever K is, including K larger than the work, and
-// a failing chunk must stop every rank with the rank, range and reason (never hang).
+// a failing chunk must stop every rank with the rank, range and reason (never hang), and a stop
+// request on the coordinator must stop every rank at the same point.
 // Exits 0 when every check holds; prints the failed check and exits 1 otherwise.
 #include <cmath>
 #include <cstdio>
@@ -70,6 +71,44 @@ int main() {
     check(message.find("failed on items [120, 130): poisoned chunk") != std::string::npos, "failure message: " + message, rank);
   }
   check(thrown, "a failing chunk throws PoolError on every rank", rank);
+
+  // A stop request on the coordinator (a signal there): every rank throws PoolInterrupted with its
+  // value after the chunks in flight are sunk; a second run skipping the sunk chunks completes the
+  // result bit-identically (resume). Workers' requests are ignored: theirs says stop at once.
+  {
+    const std::size_t count = 700;
+    std::vector<double> result(count, std::nan(""));
+    std::vector<ChunkRange> sunk;
+    const ChunkSink place = [&](ChunkRange range, std::span<const double> values) {
+      for (std::size_t i = range.begin; i < range.end; ++i) result[i] = values[i - range.begin];
+      sunk.push_back(range);
+    };
+    pool->stop_when([&] { return rank == 0 ? (sunk.size() >= 10 ? 15 : 0) : 2; });
+    int reason = 0;
+    try {
+      pool->run(count, 7, compute, place);
+    } catch (const PoolInterrupted& stopped) {
+      reason = stopped.reason();
+    }
+    check(reason == 15, "every rank stops with the coordinator's request (got " + std::to_string(reason) + ")", rank);
+    std::string done = " ";  // " begin begin ... " of the sunk chunks, shared with every rank
+    if (rank == 0) {
+      check(sunk.size() >= 10 && sunk.size() < 100, "stopped after 10 chunks plus those in flight: " + std::to_string(sunk.size()), rank);
+      for (const ChunkRange& range : sunk) done += std::to_string(range.begin) + " ";
+    }
+    done = pool->broadcast(done);
+    pool->stop_when(nullptr);
+    pool->run(count, 7, compute, place, [&](ChunkRange range) {
+      return done.find(" " + std::to_string(range.begin) + " ") != std::string::npos;
+    });
+    if (rank == 0) {
+      const std::vector<double> expected = compute({0, count});
+      check(sunk.size() == 100, "every chunk sunk exactly once over the two runs", rank);
+      bool identical = true;
+      for (std::size_t i = 0; i < count; ++i) identical = identical && result[i] == expected[i];
+      check(identical, "stopped then resumed run bit-identical to serial", rank);
+    }
+  }
 
   check(pool->broadcast(rank == 0 ? "campaign text" : "") == "campaign text", "broadcast", rank);
   if (failures == 0 && rank == 0) std::printf("pool check passed on %d process(es)\n", pool->size());

@@ -45,3 +45,45 @@ TEST_CASE("serial pool computes every item once, honours skip and reports failur
   };
   CHECK_THROWS_WITH_AS(pool->run(50, 8, failing, place), "rank 0 failed on items [16, 24): poisoned item 20", PoolError);
 }
+
+TEST_CASE("a stop request ends the serial run after the chunks already sunk; a skip run finishes it") {
+  auto pool = make_serial_pool();
+  const ChunkWork cube = [](ChunkRange range) {
+    std::vector<double> values;
+    for (std::size_t i = range.begin; i < range.end; ++i) values.push_back(double(i) * double(i) * double(i));
+    return values;
+  };
+  std::vector<double> result(100, -1.0);
+  std::vector<ChunkRange> sunk;
+  const ChunkSink place = [&](ChunkRange range, std::span<const double> values) {
+    for (std::size_t i = range.begin; i < range.end; ++i) result[i] = values[i - range.begin];
+    sunk.push_back(range);
+  };
+  // The request turns on after the third chunk: the fourth never starts.
+  pool->stop_when([&] { return sunk.size() >= 3 ? 15 : 0; });
+  int reason = 0;
+  try {
+    pool->run(100, 9, cube, place);
+  } catch (const PoolInterrupted& stopped) {
+    reason = stopped.reason();
+  }
+  CHECK(reason == 15);
+  REQUIRE(sunk.size() == 3);
+  for (std::size_t i = 0; i < 100; ++i) CHECK(result[i] == (i < 27 ? double(i * i * i) : -1.0));
+
+  // Resuming: the sunk chunks are skipped, the others computed; the whole equals one run.
+  const std::vector<ChunkRange> done = sunk;
+  pool->stop_when(nullptr);
+  pool->run(100, 9, cube, place, [&](ChunkRange range) {
+    for (const ChunkRange& d : done) {
+      if (d.begin == range.begin && d.end == range.end) return true;
+    }
+    return false;
+  });
+  for (std::size_t i = 0; i < 100; ++i) CHECK(result[i] == double(i * i * i));
+  CHECK(sunk.size() == split_into_chunks(100, 9).size());
+
+  // A request that arrives after the last chunk does not turn a finished run into a stopped one.
+  pool->stop_when([] { return 2; });
+  CHECK_NOTHROW(pool->run(100, 9, cube, place, [](ChunkRange) { return true; }));
+}

@@ -5,10 +5,12 @@
 #pragma once
 
 #include <ostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "growthuq/campaign/campaign_run.hpp"
+#include "growthuq/campaign/checkpoint_manifest.hpp"
 #include "growthuq/campaign/line_result.hpp"
 #include "growthuq/campaign/progress.hpp"
 #include "growthuq/io/output_file.hpp"
@@ -16,10 +18,32 @@
 
 namespace growthuq {
 
+// Whether finished chunks are kept on disk (checkpoint.hpp) so an interrupted run can resume.
+enum class Checkpointing {
+  off,     // nothing kept (--no-checkpoint)
+  start,   // a new checkpoint in output_dir/checkpoint, with OutputSettings::manifest
+  resume,  // continue the checkpoint of the interrupted run in output_dir (which exists)
+};
+
 struct OutputSettings {
   Overwrite overwrite = Overwrite::refuse;  // allow: reuse an existing output directory (--force)
   ProgressMode progress = ProgressMode::none;
-  std::string command_line;                 // stored in results.h5
+  std::string command_line;                 // stored in results.h5 (when resuming: the original one)
+  Checkpointing checkpointing = Checkpointing::off;
+  CheckpointManifest manifest;              // with Checkpointing::start (the coordinator writes it)
+};
+
+// The run stopped on a stop request (Pool::stop_when; Ctrl-C or SIGTERM in the CLI), raised on
+// every process. No result file was written; with a checkpoint the output directory keeps every
+// finished chunk. what() is the message for the user: "interrupted after N of M samples; finish
+// with: growthuq run --resume DIR" (meaningful on the coordinator).
+class RunInterrupted : public std::runtime_error {
+ public:
+  RunInterrupted(int reason, const std::string& message) : std::runtime_error(message), reason_(reason) {}
+  int reason() const noexcept { return reason_; }  // PoolInterrupted::reason(): the signal
+
+ private:
+  int reason_;
 };
 
 struct CampaignOutcome {
@@ -37,7 +61,10 @@ inline constexpr const char* results_h5_name = "results.h5";
 // formats not written this time are removed so the folder never mixes two runs), streams the
 // lines, writes `report` (stdout) and `log` (stderr: progress, design warnings). When the run
 // fails (e.g. kappa cannot be calibrated because no reference tube grows), the .partial files
-// are removed and so is the output directory if this run created it.
+// are removed and so is the output directory if this run created it (a new checkpoint too; a
+// resumed one stays). When the pool is stopped, the .partial files are removed, the output
+// directory and its checkpoint kept, and RunInterrupted raised. A checkpoint is removed when
+// the run completes.
 CampaignOutcome run_campaign_with_outputs(const PreparedCampaign& campaign, Pool& pool, const OutputSettings& settings,
                                           std::ostream& report, std::ostream& log);
 

@@ -93,6 +93,21 @@ class RunObserver {
   virtual void line_done(const LineResult& result, const std::vector<std::string>& warnings) = 0;
 };
 
+// Keeps finished chunks beyond the process (checkpoint.hpp): a chunk the journal holds is not
+// evaluated again but replayed into the sink, and every chunk evaluated is recorded before it
+// is sunk. Lines are numbered in run order (PreparedCampaign::lines()); values are the chunk's
+// raw values as evaluate_chunk returns them (before kappa).
+class ChunkJournal {
+ public:
+  virtual ~ChunkJournal() = default;
+  // Every process, with the same answer everywhere: whether the journal holds the chunk.
+  virtual bool holds(std::size_t line, ChunkRange range) const = 0;
+  // Coordinator: feeds every chunk of `line` the journal holds to `sink`.
+  virtual void replay(std::size_t line, const ChunkSink& sink) = 0;
+  // Coordinator: keeps a chunk just evaluated.
+  virtual void record(std::size_t line, ChunkRange range, std::span<const double> values) = 0;
+};
+
 struct RunOutcome {
   double kappa = 1.0;       // the calibrated kappa on the coordinator; 1 elsewhere and without v
   bool calibrated = false;  // v was an output and kappa was calibrated on the reference line
@@ -100,8 +115,10 @@ struct RunOutcome {
 
 // Runs every line through `pool` (all processes call it; `observer` is used on rank 0 only).
 // An InputError on the coordinator (kappa cannot be calibrated) is raised on every process;
-// a failed chunk raises PoolError everywhere.
-RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunObserver& observer);
+// a failed chunk raises PoolError everywhere, a stop request (Pool::stop_when) PoolInterrupted.
+// With a `journal`, chunks it holds are replayed instead of evaluated and new ones recorded.
+RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunObserver& observer,
+                              ChunkJournal* journal = nullptr);
 
 // Runs `action` on the coordinator and raises what it threw on every process: InputError as
 // InputError (same location and problem), anything else as std::runtime_error. All processes

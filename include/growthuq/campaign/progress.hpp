@@ -25,6 +25,8 @@ class Progress {
   void advance(std::size_t samples);
   // Ends the line: clears the bar, or prints "<line>: N samples in T s (R samples/s)".
   void line_finished();
+  // The run stopped before the line finished: clears the bar so the next message starts clean.
+  void stopped();
 
  private:
   using Clock = std::chrono::steady_clock;

@@ -38,6 +38,19 @@ class PoolError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Thrown on every process when run() stopped early because the coordinator's stop request
+// (Pool::stop_when) returned `reason` (nonzero; the CLI uses the signal number). Every chunk
+// handed out before the stop was finished and sunk.
+class PoolInterrupted : public std::runtime_error {
+ public:
+  explicit PoolInterrupted(int reason)
+      : std::runtime_error("stopped on request " + std::to_string(reason)), reason_(reason) {}
+  int reason() const noexcept { return reason_; }
+
+ private:
+  int reason_;
+};
+
 class Pool {
  public:
   virtual ~Pool() = default;
@@ -55,9 +68,22 @@ class Pool {
                    const ChunkSink& sink,
                    const std::function<bool(ChunkRange)>& skip = nullptr) = 0;
 
+  // Lets run() stop early (Ctrl-C, SIGTERM): the coordinator calls `request` before handing out
+  // each chunk; a nonzero value means no new chunk starts, chunks under way finish and reach
+  // the sink, and run() throws PoolInterrupted(value) on every process. Only the coordinator's
+  // request counts: under mpirun every rank may see the signal, and the coordinator decides
+  // for all of them, so they stop at the same point and nothing waits for a rank that left.
+  void stop_when(std::function<int()> request) { stop_request_ = std::move(request); }
+
   // Sends `text` from rank 0 to every process (campaign text, so all ranks validate the same
   // input); returns it on every rank.
   virtual std::string broadcast(const std::string& text) = 0;
+
+ protected:
+  int stop_requested() const { return stop_request_ ? stop_request_() : 0; }
+
+ private:
+  std::function<int()> stop_request_;
 };
 
 // The chunks of [0, count), in order; the last may be shorter. chunk_size 0 is treated as 1.
