@@ -1,0 +1,677 @@
+#!/usr/bin/python3
+"""CI test of tools/plot (issue 5, Plots).
+
+Runs a small real campaign (campaigns/quick.ini, 200 samples per line, v_exp among the outputs)
+with the growthuq CLI, runs tools/plot on it headless as a subprocess exactly as a user would,
+checks the PNG and PDF files, and then rebuilds the figures in-process and reads back what was
+drawn against references computed here, independently, from results.h5 with numpy and scipy:
+box edges = quartiles, whisker ends = 10th/90th percentiles, n labels = counted samples, axis
+labels with units, the correlogram's Spearman numbers = scipy.stats.spearmanr, its points where
+its own tick labels say they are, PCA bars = the stored explained variance. The relaxation and
+trade plots are checked against FIXTURES built below in the documented formats (clearly marked),
+until `growthuq run` and `growthuq tradeoff` write them.
+
+    /usr/bin/python3 tests/plot/test_plots.py --cli build/release/growthuq --source-dir .
+"""
+import argparse
+import csv
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+from pathlib import Path
+
+import h5py
+import numpy as np
+from matplotlib.image import imread
+from matplotlib.legend import Legend
+from scipy.stats import spearmanr
+
+OPTIONS = None      # command-line options, set in __main__
+SOURCE = None       # checkout root
+PLOTTING = None     # the plotting package, imported from SOURCE/tools
+
+TOLERANCE = 1e-12   # relative: the plots must carry the very numbers computed here (both are
+                    # numpy's linear-interpolation quantiles of the same doubles)
+EXPECTED_UNITS = {"p": "MPa", "E": "MPa", "eta": "MPa s", "v": "um/s"}
+
+
+def close(a, b, tolerance=TOLERANCE):
+    return np.allclose(np.asarray(a, dtype=float), np.asarray(b, dtype=float), rtol=tolerance, atol=0)
+
+
+# ---------------------------------------------------------------- independent reading of the file
+
+class Reference:
+    """What the plots should show, computed directly from results.h5 with h5py and numpy."""
+
+    def __init__(self, path):
+        with h5py.File(path, "r") as h5:
+            self.kappa = float(h5.attrs["kappa"])
+            summary_lines = [x.decode() if isinstance(x, bytes) else x for x in h5["summary"]["line"]]
+            self.lines = list(dict.fromkeys(summary_lines))
+            self.summary = {}
+            for row in h5["summary"][()]:
+                key = tuple(x.decode() if isinstance(x, bytes) else x for x in (row["line"], row["quantity"]))
+                self.summary[key] = row
+            self.status, self.columns, self.attrs, self.analysis = {}, {}, {}, {}
+            for line in self.lines:
+                group = h5["lines"][line]
+                names = [str(n) for n in group["status"].attrs["names"]]
+                self.status[line] = np.array(names, dtype=object)[group["status"][()]]
+                for key, node in group.items():
+                    if isinstance(node, h5py.Dataset) and "role" in node.attrs:
+                        self.columns[line, key] = node[()]
+                        self.attrs[line, key] = {a: str(node.attrs[a]) for a in ("quantity", "unit", "role")}
+                analysis = group["analysis"]
+                self.analysis[line] = {
+                    "ratio": analysis["explained_variance_ratio"][()],
+                    "rows": [str(r) for r in analysis["loadings"].attrs["rows"]],
+                    "io": analysis["input_output_spearman"][()],
+                    "io_rows": [str(r) for r in analysis["input_output_spearman"].attrs["rows"]],
+                    "io_columns": [str(c) for c in analysis["input_output_spearman"].attrs["columns"]],
+                }
+
+    def dataset(self, line, quantity):
+        return next(key for (owner, key), attrs in self.attrs.items()
+                    if owner == line and attrs["quantity"] == quantity)
+
+    def unit(self, line, quantity):
+        return self.attrs[line, self.dataset(line, quantity)]["unit"]
+
+    def counted(self, line, quantity):
+        """growthuq's summary rule: status ok, for v also no_growth; finite values."""
+        values = self.columns[line, self.dataset(line, quantity)]
+        keep = self.status[line] == "ok"
+        if quantity == "v":
+            keep |= self.status[line] == "no_growth"
+        return values[keep & np.isfinite(values)]
+
+
+def percentiles(values):
+    return dict(zip(("p10", "q1", "median", "q3", "p90"), np.percentile(values, [10, 25, 50, 75, 90])))
+
+
+# ---------------------------------------------------------------- the campaign and the CLI runs
+
+def run(command, **kwargs):
+    env = {k: v for k, v in os.environ.items() if k != "DISPLAY"}  # headless, as in CI
+    env["PYTHONDONTWRITEBYTECODE"] = "1"
+    return subprocess.run([str(c) for c in command], capture_output=True, text=True, env=env, **kwargs)
+
+
+def plot_command(*arguments):
+    return run([SOURCE / "tools" / "plot", *arguments])
+
+
+def write_campaign(directory, yield_pressure_MPa=0.0):
+    """A copy of campaigns/quick.ini asking for v_exp beside v, with absolute line-file paths."""
+    text = (SOURCE / "campaigns" / "quick.ini").read_text()
+    text = re.sub(r"(?m)^outputs\s*=.*$", "outputs = p, E, eta, v, v_exp", text)
+    text = re.sub(r"(?m)^yield_pressure_MPa\s*=.*$", f"yield_pressure_MPa = {yield_pressure_MPa}", text)
+    text = text.replace("= ../distributions/", f"= {SOURCE / 'distributions'}/")
+    path = directory / f"quick_v_exp_p0_{yield_pressure_MPa}.ini"
+    path.write_text(text)
+    return path
+
+
+class Shared:
+    """The campaign and the first tools/plot run, made once for every test."""
+    tmp = None
+    results_dir = None
+    plot_run = None
+    reference = None
+    results = None
+
+
+def setUpModule():
+    Shared.tmp = Path(tempfile.mkdtemp(prefix="growthuq-plot-test-"))
+    campaign = write_campaign(Shared.tmp)
+    Shared.results_dir = Shared.tmp / "quick"
+    done = run([OPTIONS.cli, "run", campaign, "--samples", 200, "--out", Shared.results_dir, "--quiet"])
+    if done.returncode != 0:
+        raise RuntimeError(f"growthuq run failed: {done.stderr}")
+    Shared.plot_run = plot_command(Shared.results_dir)
+    Shared.reference = Reference(Shared.results_dir / "results.h5")
+    Shared.results = PLOTTING.results.read_results(Shared.results_dir / "results.h5")
+
+
+def tearDownModule():
+    if Shared.tmp is not None:
+        shutil.rmtree(Shared.tmp, ignore_errors=True)
+
+
+def assert_valid_png(test, path):
+    with open(path, "rb") as handle:
+        test.assertEqual(handle.read(8), b"\x89PNG\r\n\x1a\n", path)
+    pixels = imread(path)  # decodes every row: a truncated file fails here
+    test.assertGreater(pixels.shape[0], 300, path)
+    test.assertGreater(pixels.shape[1], 300, path)
+    test.assertLess(pixels[..., :3].min(), 0.3, f"{path}: nothing dark was drawn")
+
+
+def assert_valid_pdf(test, path):
+    data = Path(path).read_bytes()
+    test.assertTrue(data.startswith(b"%PDF-"), path)
+    test.assertTrue(data.rstrip().endswith(b"%%EOF"), path)
+    test.assertEqual(len(re.findall(rb"/Type\s*/Page\b", data)), 1, f"{path}: one page expected")
+
+
+def gid_artists(figure, pattern):
+    """Every artist of `figure` whose gid matches the regular expression `pattern`."""
+    found = []
+    for artist in figure.findobj(lambda a: a.get_gid() is not None):
+        if re.fullmatch(pattern, artist.get_gid()):
+            found.append(artist)
+    return found
+
+
+def one(figure, gid):
+    found = gid_artists(figure, re.escape(gid))
+    if len(found) != 1:
+        raise AssertionError(f"{len(found)} artists with gid {gid}")
+    return found[0]
+
+
+def assert_box(test, figure, key, expected, position):
+    """The box drawn under gid `key` spans the quartiles at `position`, its median line is the
+    median, its whiskers run from the quartiles to the 10th and 90th percentiles."""
+    box = one(figure, f"{key}/box").get_path().vertices
+    test.assertTrue(close([box[:, 1].min(), box[:, 1].max()], [expected["q1"], expected["q3"]]), key)
+    test.assertTrue(close((box[:, 0].min() + box[:, 0].max()) / 2, position, 1e-9), key)
+    test.assertTrue(close(one(figure, f"{key}/median").get_ydata(), [expected["median"]] * 2), key)
+    test.assertTrue(close(one(figure, f"{key}/whisker_low").get_ydata(),
+                          [expected["q1"], expected["p10"]]), key)
+    test.assertTrue(close(one(figure, f"{key}/whisker_high").get_ydata(),
+                          [expected["q3"], expected["p90"]]), key)
+
+
+def user_error(test, completed, *expected_fragments):
+    test.assertEqual(completed.returncode, 2, completed.stdout + completed.stderr)
+    test.assertNotIn("Traceback", completed.stderr)
+    message = completed.stderr.strip()
+    test.assertEqual(len(message.splitlines()), 1, message)
+    for fragment in expected_fragments:
+        test.assertIn(str(fragment), message)
+
+
+# ---------------------------------------------------------------- the command as a user runs it
+
+class CommandLine(unittest.TestCase):
+
+    def test_writes_every_figure_as_valid_png_and_pdf_and_says_what_it_skipped(self):
+        completed = Shared.plot_run
+        self.assertEqual(completed.returncode, 0, completed.stderr)
+        plots = Shared.results_dir / "plots"
+        stems = ["boxes", "growth_rate", "pca"] + [f"correlogram_{l}" for l in Shared.reference.lines]
+        for stem in stems:
+            for extension, check in (("png", assert_valid_png), ("pdf", assert_valid_pdf)):
+                path = plots / f"{stem}.{extension}"
+                self.assertIn(f"wrote {path}", completed.stdout.splitlines())
+                check(self, path)
+        written = [line for line in completed.stdout.splitlines() if line.startswith("wrote ")]
+        self.assertEqual(len(written), 2 * len(stems))
+        self.assertEqual(sorted(p.name for p in plots.iterdir()),
+                         sorted(f"{s}.{e}" for s in stems for e in ("png", "pdf")))
+        self.assertRegex(completed.stdout, r"note: skipped relaxation curves: .*relaxation")
+        self.assertRegex(completed.stdout, r"note: skipped trade plot: no .*tradeoff\.csv")
+        status = Shared.reference.status
+        flagged = {line: int((status[line] != "ok").sum()) for line in Shared.reference.lines}
+        expected = ", ".join(f"{line} {count}" for line, count in flagged.items() if count)
+        self.assertIn(f"flagged samples left out (status not ok): {expected} (of 200 per line)",
+                      completed.stdout)
+
+    def test_refuses_to_overwrite_plots_without_force(self):
+        target = self.plots_copy()
+        before = {p.name: p.stat().st_mtime_ns for p in (target / "plots").iterdir()}
+        refused = plot_command(target, "--formats", "png", "--figures", "pca")
+        user_error(self, refused, target / "plots" / "pca.png", "--force")
+        self.assertEqual(before, {p.name: p.stat().st_mtime_ns for p in (target / "plots").iterdir()})
+        forced = plot_command(target, "--formats", "png", "--figures", "pca", "--force")
+        self.assertEqual(forced.returncode, 0, forced.stderr)
+        self.assertGreater((target / "plots" / "pca.png").stat().st_mtime_ns, before["pca.png"])
+        self.assertFalse(list((target / "plots").glob("*.partial")))
+
+    def plots_copy(self):
+        target = Shared.tmp / "overwrite"
+        if not target.exists():
+            target.mkdir()
+            shutil.copy(Shared.results_dir / "results.h5", target)
+            self.assertEqual(plot_command(target, "--formats", "png", "--figures", "pca").returncode, 0)
+        return target
+
+    def test_bad_input_is_one_line_naming_the_file_and_what_was_expected(self):
+        missing = Shared.tmp / "does-not-exist"
+        user_error(self, plot_command(missing), missing, "no such directory")
+
+        empty = Shared.tmp / "empty"
+        empty.mkdir(exist_ok=True)
+        user_error(self, plot_command(empty), empty / "results.h5", "expected the results.h5")
+
+        not_hdf5 = Shared.tmp / "not-hdf5"
+        not_hdf5.mkdir(exist_ok=True)
+        (not_hdf5 / "results.h5").write_text("line,quantity\nwild_type,p\n")
+        user_error(self, plot_command(not_hdf5), not_hdf5 / "results.h5", "not a readable HDF5 file")
+
+        foreign = Shared.tmp / "foreign"
+        foreign.mkdir(exist_ok=True)
+        with h5py.File(foreign / "results.h5", "w") as h5:
+            h5["x"] = np.arange(3.0)
+        user_error(self, plot_command(foreign), foreign / "results.h5", "not a growthuq results file")
+
+        no_status = Shared.tmp / "no-status"
+        no_status.mkdir(exist_ok=True)
+        shutil.copy(Shared.results_dir / "results.h5", no_status)
+        with h5py.File(no_status / "results.h5", "a") as h5:
+            del h5["lines/pme48/status"]
+        user_error(self, plot_command(no_status), "/lines/pme48/status: missing")
+
+        bad_trade = Shared.tmp / "bad-trade"
+        bad_trade.mkdir(exist_ok=True)
+        shutil.copy(Shared.results_dir / "results.h5", bad_trade)
+        (bad_trade / "tradeoff.csv").write_text("fidelity,samples\nthin_shell,100\n")
+        user_error(self, plot_command(bad_trade, "--figures", "tradeoff"),
+                   bad_trade / "tradeoff.csv", "header lacks", "median_error_pct")
+
+        unknown = plot_command(Shared.results_dir, "--formats", "svg")
+        self.assertEqual(unknown.returncode, 2)
+        self.assertIn("expected a comma-separated list of png, pdf", unknown.stderr)
+
+
+# ---------------------------------------------------------------- what was drawn
+
+class BoxPlots(unittest.TestCase):
+
+    @classmethod
+    def setUpClass(cls):
+        cls.figure = PLOTTING.boxes.box_figure(Shared.results)
+
+    def test_one_panel_per_quantity_with_units_and_one_box_per_line(self):
+        reference = Shared.reference
+        panels = {ax.get_ylabel(): ax for ax in self.figure.axes}
+        self.assertEqual(sorted(panels), sorted(f"{q} ({u})" for q, u in EXPECTED_UNITS.items()))
+        for quantity, unit in EXPECTED_UNITS.items():
+            ax = panels[f"{quantity} ({unit})"]
+            self.assertEqual(unit, reference.unit(reference.lines[0], quantity))
+            boxes = [p for p in ax.patches if (p.get_gid() or "").endswith("/box")]
+            self.assertEqual(len(boxes), len(reference.lines))
+            self.assertEqual([t.get_text() for t in ax.get_xticklabels()], reference.lines)
+            self.assertEqual(ax.get_yscale(), "log" if quantity in ("E", "eta") else "linear")
+
+    def test_boxes_are_quartiles_whiskers_are_10_and_90_percentiles_and_n_is_the_counted_samples(self):
+        reference = Shared.reference
+        for quantity in EXPECTED_UNITS:
+            for position, line in enumerate(reference.lines):
+                values = reference.counted(line, quantity)
+                expected = percentiles(values)
+                key = f"{line}/{quantity}"
+                assert_box(self, self.figure, key, expected, position)
+                label = one(self.figure, f"{key}/n").get_text()
+                self.assertEqual(int(re.match(r"n = (\d+)", label).group(1)), values.size, key)
+                flagged = 200 - values.size
+                self.assertEqual(f"{flagged} flagged" in label, flagged > 0, key)
+                # The same numbers as the engine's summary (summary.csv, /summary in results.h5).
+                row = reference.summary[line, quantity]
+                self.assertEqual(int(row["n"]), values.size)
+                self.assertTrue(close([row[k] for k in expected], list(expected.values())), key)
+
+
+class GrowthRate(unittest.TestCase):
+
+    @classmethod
+    def setUpClass(cls):
+        cls.figure = PLOTTING.growth_rate.growth_rate_figure(Shared.results)
+
+    def test_medians_and_10_90_ranges_of_measured_and_predicted_rates(self):
+        reference = Shared.reference
+        for line in reference.lines:
+            measured = percentiles(reference.counted(line, "v_exp"))
+            predicted = percentiles(reference.counted(line, "v"))
+            point = one(self.figure, f"{line}/median_point")
+            self.assertTrue(close(point.get_xdata(), [measured["median"]]), line)
+            self.assertTrue(close(point.get_ydata(), [predicted["median"]]), line)
+            (horizontal,) = one(self.figure, f"{line}/v_exp_range").get_segments()
+            self.assertTrue(close(sorted(horizontal[:, 0]), [measured["p10"], measured["p90"]]), line)
+            (vertical,) = one(self.figure, f"{line}/v_range").get_segments()
+            self.assertTrue(close(sorted(vertical[:, 1]), [predicted["p10"], predicted["p90"]]), line)
+            position = Shared.reference.lines.index(line)
+            assert_box(self, self.figure, f"{line}/v_exp", measured, position - 0.2)
+            assert_box(self, self.figure, f"{line}/v", predicted, position + 0.2)
+
+    def test_labels_units_and_the_calibration_note(self):
+        boxes, scatter = self.figure.axes[:2]
+        self.assertEqual(boxes.get_ylabel(), "v (um/s)")
+        self.assertEqual(scatter.get_xlabel(), "measured v_exp (um/s)")
+        self.assertEqual(scatter.get_ylabel(), "predicted v (um/s)")
+        drawn = [p for p in boxes.patches if p.get_gid().endswith("/box")]
+        self.assertEqual(len(drawn), 2 * len(Shared.reference.lines))
+        title = self.figure._suptitle.get_text()
+        self.assertIn(f"kappa = {Shared.reference.kappa:.4g} is calibrated on wild_type", title)
+        self.assertIn("by construction", title)
+        one_to_one = one(self.figure, "one_to_one")
+        self.assertTrue(np.array_equal(one_to_one.get_xdata(), one_to_one.get_ydata()))
+
+
+class YieldPressure(unittest.TestCase):
+    """With a yield pressure many tubes do not grow (status no_growth, v = 0): growthuq's summary
+    keeps them in v (as 0) and leaves them out of p, E and eta; the plots must do the same."""
+
+    @classmethod
+    def setUpClass(cls):
+        campaign = write_campaign(Shared.tmp, yield_pressure_MPa=0.2)
+        out = Shared.tmp / "yield"
+        done = run([OPTIONS.cli, "run", campaign, "--samples", 200, "--lines", "wild_type,pme48",
+                    "--out", out, "--quiet"])
+        if done.returncode != 0:
+            raise RuntimeError(f"growthuq run failed: {done.stderr}")
+        cls.reference = Reference(out / "results.h5")
+        cls.results = PLOTTING.results.read_results(out / "results.h5")
+
+    def test_no_growth_samples_count_in_v_only(self):
+        reference = self.reference
+        no_growth = {line: int((reference.status[line] == "no_growth").sum()) for line in reference.lines}
+        self.assertGreater(no_growth["pme48"], 50)   # pme48's median turgor is below 0.2 MPa
+        boxes = PLOTTING.boxes.box_figure(self.results)
+        growth = PLOTTING.growth_rate.growth_rate_figure(self.results)
+        for line in reference.lines:
+            ok = int((reference.status[line] == "ok").sum())
+            for quantity, n in (("p", ok), ("eta", ok), ("v", ok + no_growth[line])):
+                label = one(boxes, f"{line}/{quantity}/n").get_text()
+                self.assertEqual(int(re.match(r"n = (\d+)", label).group(1)), n, (line, quantity))
+            v = reference.counted(line, "v")
+            self.assertEqual(int((v == 0).sum()), no_growth[line])
+            expected = percentiles(v)
+            assert_box(self, boxes, f"{line}/v", expected, reference.lines.index(line))
+            self.assertTrue(close(one(growth, f"{line}/median_point").get_ydata(), [expected["median"]]))
+
+
+def tick_map(ticks, values, positions, coordinate):
+    """The map from data value to drawn position (x: coordinate 0, y: 1) that the tick labels
+    state (linear, or linear in log10), checked to also place `values` exactly at `positions`;
+    None when neither fits."""
+    tick_values = np.array([float(t.get_text()) for t in ticks])
+    tick_positions = np.array([t.xy[coordinate] for t in ticks])
+    for transform in (lambda x: np.asarray(x, dtype=float), np.log10):
+        if transform is np.log10 and (tick_values.min() <= 0 or values.min() <= 0):
+            continue
+        slope, offset = np.polyfit(transform(tick_values), tick_positions, 1)
+        if not np.allclose(slope * transform(tick_values) + offset, tick_positions, rtol=0, atol=1e-9):
+            continue
+        if np.allclose(slope * transform(values) + offset, positions, rtol=0, atol=1e-9):
+            return lambda x, s=slope, o=offset, f=transform: s * f(x) + o
+    return None
+
+
+class Correlogram(unittest.TestCase):
+
+    def test_k_by_k_cells_spearman_above_scatter_below_histograms_on_the_diagonal(self):
+        reference = Shared.reference
+        for line_index, line in enumerate(reference.lines):
+            with self.subTest(line=line):
+                figure = PLOTTING.correlogram.correlogram_figure(
+                    Shared.results, Shared.results.lines[line_index])
+                self.check_line(figure, line)
+
+    def check_line(self, figure, line):
+        reference = Shared.reference
+        names = reference.analysis[line]["rows"]           # the engine's inputs then outputs
+        k = len(names)
+        ok = reference.status[line] == "ok"
+        data = {name: reference.columns[line, name][ok] for name in names}
+        cells = gid_artists(figure, r"cell/.*")
+        self.assertEqual(len(cells), k * k)
+        self.assertEqual({c.get_gid() for c in cells}, {f"cell/{a}/{b}" for a in names for b in names})
+        (ax,) = figure.axes
+        x_ticks = {j: [t for t in ax.texts if t.get_gid() == f"xtick/{j}"] for j in range(k)}
+        y_ticks = {i: [t for t in ax.texts if t.get_gid() == f"ytick/{i}"] for i in range(k)}
+        for j, name in enumerate(names):
+            attrs = reference.attrs[line, name]
+            label = f"{attrs['quantity']} ({attrs['unit']})"
+            self.assertEqual(one(figure, f"xlabel/{j}").get_text(), label)
+            self.assertEqual(one(figure, f"ylabel/{j}").get_text(), label)
+        for i, row_name in enumerate(names):
+            for j, column_name in enumerate(names):
+                key = f"{row_name}/{column_name}"
+                cell = one(figure, f"cell/{key}")
+                self.assertEqual((cell.get_x(), cell.get_y()), (j, k - 1 - i), key)
+                if i < j:
+                    text = one(figure, f"spearman/{key}")
+                    rho = spearmanr(data[row_name], data[column_name]).statistic
+                    self.assertLessEqual(abs(float(text.get_text()) - rho), 0.005 + 1e-12, key)
+                    x, y = text.get_position()
+                    self.assertTrue(j < x < j + 1 and k - 1 - i < y < k - i, key)
+                elif i > j:
+                    points = one(figure, f"scatter/{key}").get_offsets()
+                    self.assertEqual(len(points), data[row_name].size)
+                    self.assertIsNotNone(tick_map(x_ticks[j], data[column_name], points[:, 0], 0),
+                                         f"{key}: x positions are not the data at the tick labels' scale")
+                    self.assertIsNotNone(tick_map(y_ticks[i], data[row_name], points[:, 1], 1),
+                                         f"{key}: y positions are not the data at the tick labels' scale")
+                else:
+                    self.check_histogram(one(figure, f"histogram/{key}"), x_ticks[j],
+                                         data[row_name], i, k, key)
+        # The engine's stored input x output coefficients agree with scipy's on the same samples.
+        stored = reference.analysis[line]
+        for r, row_name in enumerate(stored["io_rows"]):
+            for c, column_name in enumerate(stored["io_columns"]):
+                rho = spearmanr(data[row_name], data[column_name]).statistic
+                self.assertAlmostEqual(stored["io"][r, c], rho, delta=1e-9)
+
+    def check_histogram(self, stairs, ticks, values, i, k, key):
+        """Bar heights proportional to the number of samples in each bin, where the bins are read
+        off the drawing through the tick labels' scale (linear or log10: with two ticks both fit
+        the labels, and only the right one fits the bars)."""
+        heights, edges, baseline = stairs.get_data()
+        self.assertEqual(baseline, k - 1 - i, key)
+        drawn = (heights - baseline) / (heights - baseline).max()
+        tick_values = np.array([float(t.get_text()) for t in ticks])
+        tick_positions = np.array([t.xy[0] for t in ticks])
+        matched = False
+        for forward, inverse in ((lambda x: x, lambda x: x), (np.log10, lambda x: 10 ** x)):
+            if forward is np.log10 and tick_values.min() <= 0:
+                continue
+            slope, offset = np.polyfit(forward(tick_values), tick_positions, 1)
+            if not np.allclose(slope * forward(tick_values) + offset, tick_positions, atol=1e-9):
+                continue
+            counts, _ = np.histogram(values, bins=inverse((edges - offset) / slope))
+            matched |= counts.sum() == values.size and np.allclose(drawn, counts / counts.max(), atol=1e-9)
+        self.assertTrue(matched, f"{key}: bar heights are not the sample counts of their bins")
+
+
+class PrincipalComponents(unittest.TestCase):
+
+    def test_bars_are_the_stored_explained_variance(self):
+        figure = PLOTTING.pca.pca_figure(Shared.results)
+        for line in Shared.reference.lines:
+            ratio = Shared.reference.analysis[line]["ratio"]
+            bars = [one(figure, f"{line}/PC{c}") for c in range(1, ratio.size + 1)]
+            self.assertTrue(close([bar.get_height() for bar in bars], 100 * ratio))
+            self.assertTrue(close(one(figure, f"{line}/cumulative").get_ydata(), 100 * np.cumsum(ratio)))
+        self.assertEqual(figure.axes[0].get_ylabel(), "explained variance (%)")
+        self.assertEqual(len(figure.axes), len(Shared.reference.lines))
+
+
+# ---------------------------------------------------------------- FIXTURES: relaxation and trade
+
+def relaxation_curve(t, einf, tau_fast, tau_slow, force_uN=5.0):
+    """A two-term generalized Maxwell force decay F(t) = F0 (e_inf + a1 e^-t/tau1 + a2 e^-t/tau2)."""
+    a_fast = 0.4 * (1 - einf)
+    return force_uN * (einf + a_fast * np.exp(-t / tau_fast) + (1 - einf - a_fast) * np.exp(-t / tau_slow))
+
+
+def add_relaxation_fixture(path, rng):
+    """FIXTURE, not engine output: /lines/<line>/relaxation in the documented layout, for two
+    lines - wild_type with a compound fit table (5 curves, 4 ok), pme48 with column datasets and a
+    coded status (2 curves, 1 ok) - points in shuffled order, the ramp at t <= 0 without a fit.
+    Returns {line: [(name, status, t, F, F_fit)]} as written."""
+    written = {}
+    t = np.concatenate([np.linspace(-0.05, 0, 6), np.geomspace(0.01, 5.0, 120)])
+    with h5py.File(path, "a") as h5:
+        for line, statuses, layout in (("wild_type", ["ok", "ok", "fit_failed", "ok", "ok"], "compound"),
+                                       ("pme48", ["fit_failed", "ok"], "columns")):
+            curves, index, times, forces, fits, taus = [], [], [], [], [], []
+            for row, status in enumerate(statuses):
+                einf, tau_fast, tau_slow = 0.6 + 0.05 * row, 0.2 + 0.02 * row, 3.0 + 0.5 * row
+                clean = relaxation_curve(np.maximum(t, 0), einf, tau_fast, tau_slow)
+                measured = clean * (1 + 0.005 * rng.standard_normal(t.size))
+                fit = np.where((t > 0) & (status == "ok"), clean, np.nan)
+                name = f"{line}_{row:02d}"
+                curves.append((name, status, t, measured, fit))
+                index += [row] * t.size
+                times.append(t)
+                forces.append(measured)
+                fits.append(fit)
+                taus.append((tau_fast, tau_slow, einf))
+            order = rng.permutation(len(index))
+            group = h5.create_group(f"lines/{line}/relaxation")
+            points = group.create_group("points")
+            points["curve_index"] = np.array(index, dtype=np.int64)[order]
+            points["t_s"] = np.concatenate(times)[order]
+            points["F_uN"] = np.concatenate(forces)[order]
+            points["F_fit_uN"] = np.concatenate(fits)[order]
+            names = [c[0] for c in curves]
+            if layout == "compound":
+                string = h5py.string_dtype()
+                cells = [(n, s, tf, ts, e, 40.0) for n, s, (tf, ts, e) in zip(names, statuses, taus)]
+                table = np.array(cells, dtype=[("curve", string), ("status", string), ("tau_fast_s", float),
+                                  ("tau_slow_s", float), ("einf_frac", float), ("Er0_MPa", float)])
+                group["fits"] = table
+            else:
+                codes = ["ok", "fit_failed"]
+                group["curve"] = np.array(names, dtype=h5py.string_dtype())
+                group["status"] = np.array([codes.index(s) for s in statuses], dtype=np.uint8)
+                group["status"].attrs["names"] = codes
+                group["tau_fast_s"] = np.array([x[0] for x in taus])
+                group["tau_slow_s"] = np.array([x[1] for x in taus])
+                group["einf_frac"] = np.array([x[2] for x in taus])
+            written[line] = curves
+    return written
+
+
+TRADE_HEADER = ("fidelity,samples,seconds,line,quantity,unit,n,median,iqr,median_ci_low,"
+                "median_ci_high,reference_median,reference_iqr,median_error_pct,iqr_error_pct,"
+                "median_error_over_ci_half_width")
+
+
+TRADE_COUNTS = (100, 300, 1000)
+
+
+def run_real_tradeoff(directory):
+    """tradeoff.csv written by the real `growthuq tradeoff` on the test campaign at small counts
+    (the largest, 1000, is the reference), read back independently with the csv module."""
+    campaign = write_campaign(directory)
+    path = directory / "tradeoff.csv"
+    done = run([OPTIONS.cli, "tradeoff", campaign, "--samples-list", ",".join(map(str, TRADE_COUNTS)),
+                "--out", path, "--quiet"])
+    if done.returncode != 0:
+        raise RuntimeError(f"growthuq tradeoff failed: {done.stderr}")
+    with open(path, newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    numbers = TRADE_HEADER.split(",")[6:]
+    for row in rows:
+        row["samples"] = int(row["samples"])
+        row["seconds"] = float(row["seconds"])
+        for column in numbers:
+            row[column] = float(row[column]) if row[column] != "" else math.nan
+    return rows
+
+
+class RelaxationAndTrade(unittest.TestCase):
+    """On a copy of the campaign output with the relaxation FIXTURE added and a real tradeoff.csv."""
+
+    @classmethod
+    def setUpClass(cls):
+        rng = np.random.default_rng(5)
+        cls.directory = Shared.tmp / "with-fixtures"
+        cls.directory.mkdir()
+        shutil.copy(Shared.results_dir / "results.h5", cls.directory)
+        cls.curves = add_relaxation_fixture(cls.directory / "results.h5", rng)
+        cls.trade = run_real_tradeoff(cls.directory)
+        cls.plot_run = plot_command(cls.directory, "--figures", "relaxation,tradeoff")
+        cls.results = PLOTTING.results.read_results(cls.directory / "results.h5")
+
+    def test_the_command_writes_both_figures(self):
+        self.assertEqual(self.plot_run.returncode, 0, self.plot_run.stderr)
+        for stem in ("relaxation", "tradeoff"):
+            assert_valid_png(self, self.directory / "plots" / f"{stem}.png")
+            assert_valid_pdf(self, self.directory / "plots" / f"{stem}.pdf")
+        self.assertNotIn("skipped", self.plot_run.stdout)
+
+    def test_relaxation_panels_show_the_curves_and_their_fits(self):
+        figure = PLOTTING.relaxation.relaxation_figure(self.results)
+        self.assertEqual(len(figure.axes), 2)
+        for ax, line in zip(figure.axes, ("wild_type", "pme48")):
+            self.assertEqual((ax.get_xlabel(), ax.get_ylabel(), ax.get_xscale()), ("t (s)", "F (uN)", "log"))
+            curves = self.curves[line]
+            expected = ([c for c in curves if c[1] == "ok"] + [c for c in curves if c[1] != "ok"])[:4]
+            drawn = [l.get_gid().split("/")[1] for l in ax.lines if l.get_gid().endswith("/data")]
+            self.assertEqual(drawn, [c[0] for c in expected])
+            self.assertIn(f"{len(expected)} of {len(curves)} curves", ax.get_title())
+            for name, status, t, measured, fit in expected:
+                data = one(figure, f"{line}/{name}/data")
+                after = t > 0
+                self.assertTrue(np.array_equal(data.get_xdata(), t[after]))
+                self.assertTrue(np.array_equal(data.get_ydata(), measured[after]))
+                fitted = one(figure, f"{line}/{name}/fit")
+                self.assertTrue(np.array_equal(fitted.get_ydata(), fit[after & np.isfinite(fit)]))
+                self.assertEqual(fitted.get_xdata().size, 0 if status != "ok" else after.sum())
+
+    def test_trade_panels_show_errors_ci_and_time_against_samples(self):
+        rows = PLOTTING.tradeoff_data.read_tradeoff(self.directory / "tradeoff.csv")
+        figure = PLOTTING.tradeoff.tradeoff_figure(rows, "quick", Shared.reference.lines)
+        panels = figure.axes
+        quantities = [("p", "MPa"), ("E", "MPa"), ("eta", "MPa s"), ("v", "um/s"), ("v_exp", "um/s")]
+        self.assertEqual([ax.get_title() for ax in panels],
+                         [f"{q} ({unit})" for q, unit in quantities] + ["time of the run (all lines)"])
+        for ax in panels:
+            self.assertEqual((ax.get_xscale(), ax.get_yscale()), ("log", "log"))
+            self.assertEqual(ax.get_xlabel(), "samples per line")
+        self.assertEqual(panels[0].get_ylabel(), "error (% of reference)")
+        self.assertEqual(panels[-1].get_ylabel(), "wall time (s)")
+        legend_labels = [t.get_text() for legend in figure.findobj(Legend) for t in legend.get_texts()]
+        for label in list(Shared.reference.lines) + ["|median error|", "|IQR error|",
+                                                     "95 % CI half-width of the median"]:
+            self.assertIn(label, legend_labels)
+        reference = max(TRADE_COUNTS)
+        for line in Shared.reference.lines:
+            for quantity, _ in quantities:
+                mine = [r for r in self.trade if r["line"] == line and r["quantity"] == quantity
+                        and r["samples"] < reference]
+                self.assertEqual([r["samples"] for r in mine], list(TRADE_COUNTS[:-1]))
+                samples = [r["samples"] for r in mine]
+                for series, expected in (
+                        ("median", [abs(r["median_error_pct"]) for r in mine]),
+                        ("iqr", [abs(r["iqr_error_pct"]) for r in mine]),
+                        ("ci", [100 * (r["median_ci_high"] - r["median_ci_low"]) / 2
+                                / abs(r["reference_median"]) for r in mine])):
+                    drawn = one(figure, f"analytic/{line}/{quantity}/{series}")
+                    self.assertTrue(close(drawn.get_xdata(), samples))
+                    self.assertTrue(close(drawn.get_ydata(), expected, 1e-9), (line, quantity, series))
+        seconds = one(figure, "analytic/seconds")
+        by_count = {r["samples"]: r["seconds"] for r in self.trade}
+        self.assertTrue(close(seconds.get_xdata(), list(TRADE_COUNTS)))
+        self.assertTrue(close(seconds.get_ydata(), [by_count[n] for n in TRADE_COUNTS]))
+
+
+if __name__ == "__main__":
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--cli", required=True, type=Path, help="the growthuq executable")
+    parser.add_argument("--source-dir", required=True, type=Path, help="the checkout root")
+    OPTIONS, rest = parser.parse_known_args()
+    SOURCE = OPTIONS.source_dir.resolve()
+    sys.dont_write_bytecode = True
+    sys.path.insert(0, str(SOURCE / "tools"))
+    import plotting.boxes
+    import plotting.correlogram
+    import plotting.growth_rate
+    import plotting.pca
+    import plotting.relaxation
+    import plotting.results
+    import plotting.tradeoff
+    import plotting.tradeoff_data
+    PLOTTING = plotting
+    unittest.main(argv=[sys.argv[0], *rest], verbosity=2)

@@ -1,0 +1,74 @@
+"""Force-relaxation curves with their generalized Maxwell fits, for campaigns built from raw
+curves: one panel per line with relaxation data, a few curves each (fits with status ok first),
+measured force as points and the fitted force as a line, on a log time axis (t = 0 at the force
+maximum; points at t <= 0, the ramp, cannot be shown on it)."""
+import math
+
+import numpy as np
+from matplotlib import colors as mcolors
+
+from .errors import FigureSkipped
+from .style import line_colors, new_figure, styled
+
+CURVES_PER_LINE = 4
+
+
+def chosen_curves(curves, count=CURVES_PER_LINE):
+    """Up to `count` curves with points, those whose fit is ok first, each group in file order."""
+    with_points = [curve for curve in curves if curve.t_s.size]
+    ordered = ([curve for curve in with_points if curve.status == "ok"]
+               + [curve for curve in with_points if curve.status != "ok"])
+    return ordered[:count]
+
+
+def _shades(color, count):
+    """`count` shades of one line's colour, from darker (mixed with black) to lighter (white)."""
+    base = np.array(mcolors.to_rgb(color))
+    mixes = np.linspace(-0.35, 0.45, count) if count > 1 else [0.0]
+    return [tuple(base * (1 + f) if f < 0 else base + (1 - base) * f) for f in mixes]
+
+
+def _legend_text(curve):
+    if curve.status != "ok":
+        return f"{curve.name} ({curve.status})"
+    if "tau_fast_s" in curve.fit and "tau_slow_s" in curve.fit:
+        return f"{curve.name} (tau {curve.fit['tau_fast_s']:.2g} s, {curve.fit['tau_slow_s']:.2g} s)"
+    return curve.name
+
+
+def _draw_line(ax, line, color):
+    shown = chosen_curves(line.relaxation)
+    for curve, shade in zip(shown, _shades(color, len(shown))):
+        after_maximum = curve.t_s > 0
+        ax.plot(curve.t_s[after_maximum], curve.F_uN[after_maximum], "o", markersize=2.2,
+                color=shade, alpha=0.55, markeredgewidth=0, gid=f"{line.name}/{curve.name}/data")
+        fitted = after_maximum & np.isfinite(curve.F_fit_uN)
+        ax.plot(curve.t_s[fitted], curve.F_fit_uN[fitted], "-", color=shade, linewidth=1.4,
+                gid=f"{line.name}/{curve.name}/fit", label=_legend_text(curve))
+    ok = sum(curve.status == "ok" for curve in line.relaxation)
+    ax.set_xscale("log")
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel("F (uN)")
+    ax.set_title(f"{line.name}: {len(shown)} of {len(line.relaxation)} curves ({ok} fits ok)")
+    ax.legend(loc="upper right", frameon=False, fontsize=6.5)
+    ax.grid(alpha=0.3, which="major")
+
+
+@styled
+def relaxation_figure(results):
+    lines = [line for line in results.lines if line.relaxation]
+    if not lines:
+        raise FigureSkipped("relaxation curves: results.h5 has no /lines/<line>/relaxation group "
+                            "(campaigns built from raw relaxation curves have one)")
+    colors = line_colors(results.line_names())
+    columns = min(3, len(lines))
+    rows = math.ceil(len(lines) / columns)
+    figure = new_figure(4.0 * columns, 3.2 * rows + 0.5)
+    axes = figure.subplots(rows, columns, squeeze=False).ravel()
+    for ax, line in zip(axes, lines):
+        _draw_line(ax, line, colors[line.name])
+    for ax in axes[len(lines):]:
+        ax.remove()
+    figure.suptitle(f"{results.campaign_name}: force relaxation, measured (points) and "
+                    "generalized Maxwell fit (line); t = 0 at the force maximum", fontsize=9)
+    return figure
