@@ -35,6 +35,9 @@ def reference_samples(rows):
     return largest
 
 
+ERROR_FLOOR_PCT = 1e-4
+
+
 def _ordered(values):
     return list(dict.fromkeys(values))
 
@@ -59,6 +62,11 @@ def _quantity_panel(ax, rows, quantity, colors, markers, reference):
     ax.set_ylabel("error (% of reference)")
     ax.set_title(f"{quantity} ({unit})" if unit else quantity)
     ax.grid(alpha=0.3, which="major")
+    # Errors below 1e-4 % are rounding, not sampling (the reference line's v equals its
+    # measured median by the kappa calibration): keep them from stretching the axis.
+    bottom, top = ax.get_ylim()
+    if bottom < ERROR_FLOOR_PCT < top:
+        ax.set_ylim(bottom=ERROR_FLOOR_PCT)
 
 
 def _time_panel(ax, rows, markers):
