@@ -19,6 +19,8 @@ constexpr std::array commands{
     Command{"correlate", "rank correlation of (k, h, d, d0) from the forward mechanics", growthuq::cli::run_correlate},
     Command{"relax", "fit generalized Maxwell series to force-relaxation curves", growthuq::cli::run_relax},
     Command{"run", "run a campaign: plant lines through the models, summaries and result files", growthuq::cli::run_run},
+    Command{"synth", "draw a SYNTHETIC raw data set (tables, curves) from true line distributions", growthuq::cli::run_synth},
+    Command{"fit-line", "fit a plant line's distributions from its raw data (raw.ini) to a line file", growthuq::cli::run_fit_line},
 };
 
 void print_usage(std::ostream& out) {
