@@ -114,13 +114,15 @@ int run_synth(const Arguments& arguments) {
           "Draws a SYNTHETIC raw data set from the TRUE distributions in each line file, as a lab would hand\n"
           "it over, one folder per line (DIR/<line>/): indentation.csv (tube, k, d), plasmolysis.csv (tube,\n"
           "d0), tem_sections.csv (section, h), growth.csv (tube, v_exp), relaxation_curves.csv (curve, t_s,\n"
-          "F_uN) with relaxation_meta.csv (curve, delta_um, p_MPa, d_um, h_nm, rho_um), and raw.ini naming them\n"
-          "(the raw line file a campaign reads with raw = FILE). Each quantity is measured on its own tubes and\n"
-          "drawn independently from its true law, rounded to instrument resolution. Relaxation curves are\n"
-          "simulated ramps and holds of tubes with their own k, d, d0 (p from the thin shell), the line's median\n"
-          "h, tau_slow and einf from the truth and an illustrative fast phase (tau_fast ~0.25 s), with Gaussian\n"
-          "force noise. Every file starts with '#' lines marking it SYNTHETIC, naming the truth and the command\n"
-          "that regenerates it (the same seed gives the same files).",
+          "F_uN) with relaxation_meta.csv (curve, delta_um, p_MPa, d_um, h_nm, rho_um), raw.ini naming them (the\n"
+          "raw line file a campaign reads with raw = FILE), and relaxation_truth.csv (each curve's true tau_slow\n"
+          "and einf, which no lab has; not named by raw.ini). Each quantity is measured on its own tubes and\n"
+          "drawn independently from its true law, rounded to instrument resolution. A relaxation curve is the\n"
+          "simulated ramp and hold of a tube with its own k, d, d0 (p from the thin shell; redrawn until E_r can\n"
+          "relax to its einf above the membrane limit), the line's median h, tau_slow and einf drawn from the\n"
+          "truth and an illustrative fast phase (tau_fast ~0.25 s), with Gaussian force noise. Every file starts\n"
+          "with '#' lines marking it SYNTHETIC, naming the truth and the command that regenerates it (the same\n"
+          "seed gives the same files).",
           described, positional, values)) {
     return 0;
   }

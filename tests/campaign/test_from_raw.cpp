@@ -5,14 +5,18 @@
 //
 // Which interval: the campaign's 95 % CI of a median (summary.csv) holds Monte Carlo error only;
 // laws fitted to 20-60 tubes move the medians far more (the test prints how many true medians the
-// Monte Carlo CI misses). The data-uncertainty bootstrap (campaign/data_uncertainty.hpp) holds
-// both. Twenty intervals are checked at once (p, E, eta, v of five lines), so requiring all of
-// them to hold at 95 % each would fail a correct method in about 64 % of data sets. The test
-// checks instead (a) every true median within the Bonferroni-simultaneous 95 % band of the
-// bootstrap, |ln(true / estimate)| <= 3.02 sd of the log replicate medians (z_{1 - 0.05/40} =
-// 3.023; log scale because medians of positive, skewed quantities are closer to lognormal),
-// and (b) at most 4 of the 20 per-quantity 95 % percentile intervals missing (P(>= 5 misses) =
-// 0.26 % for a calibrated interval).
+// Monte Carlo CI misses: 17 of 20 here). The data-uncertainty bootstrap
+// (campaign/data_uncertainty.hpp) holds both. Twenty medians are checked at once (p, E, eta, v of
+// five lines), and their errors are correlated (a line's p, E, eta and v share its d and d0 fits;
+// every v shares kappa), so requiring each 95 % interval to hold would fail a correct method in
+// most data sets. The test requires every true median within the Bonferroni-simultaneous band,
+// |ln(true / estimate)| <= 3.023 sd of the log replicate medians (z_{1 - 0.05/40}; valid under
+// any dependence; log scale because medians of positive, skewed quantities are closer to
+// lognormal). Measured over 30 synthetic data sets (tools/data-uncertainty-coverage, README
+// "Data uncertainty"): the per-quantity 95 % intervals covered 563 of 600 true medians (93.8 %)
+// and the band held in 27 of 30 sets (nominal >= 95 %): the bootstrap is slightly narrow, and a
+// new draw of the shipped data could fail this test with a probability of about 10 %. The
+// shipped set's largest |z| is printed.
 //
 // Also: the results.h5 layout of raw-data lines through the CLI and h5py (check_raw_results.py).
 #include <doctest/doctest.h>
@@ -20,6 +24,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -96,6 +101,7 @@ TEST_CASE("from_raw: the campaign fitted to raw data recovers the true medians w
   const auto truth = run_summaries(truth_prepared);
 
   std::size_t percentile_misses = 0, monte_carlo_misses = 0, checked = 0;
+  double largest_z = 0.0;
   for (const DataUncertainty& row : uncertainty.rows) {
     if (row.quantity == "v_exp") continue;  // a measured input: its recovery is the fit's, tested in test_synthetic
     CAPTURE(row.line);
@@ -118,14 +124,14 @@ TEST_CASE("from_raw: the campaign fitted to raw data recovers the true medians w
                      << std::string(in_percentile ? "" : "  OUTSIDE the 95 % interval")
                      << std::string(in_monte_carlo ? "" : "; outside the Monte Carlo CI"));
     CHECK(std::abs(z) <= 3.023);
+    largest_z = std::max(largest_z, std::abs(z));
     percentile_misses += in_percentile ? 0 : 1;
     monte_carlo_misses += in_monte_carlo ? 0 : 1;
     ++checked;
   }
   CHECK(checked == 20);
-  MESSAGE(percentile_misses << " of " << checked << " true medians outside the 95 % data interval, " << monte_carlo_misses
-                            << " outside the Monte Carlo 95 % CI alone");
-  CHECK(percentile_misses <= 4);
+  MESSAGE(percentile_misses << " of " << checked << " true medians outside their 95 % data interval, " << monte_carlo_misses
+                            << " outside the Monte Carlo 95 % CI alone; largest |z| " << largest_z);
 }
 
 TEST_CASE("from_raw: results.h5 holds the fits, the curves with their fitted model and the data uncertainty") {
