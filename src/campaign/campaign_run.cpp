@@ -5,8 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "growthuq/core/error.hpp"
 #include "growthuq/campaign/line_source.hpp"
+#include "growthuq/core/error.hpp"
 #include "growthuq/core/units.hpp"
 #include "growthuq/growth/kappa.hpp"
 #include "growthuq/mechanics/mechanical_correlation.hpp"
