@@ -182,6 +182,16 @@ void read_physics_section(const IniDocument& document, const IniSection& section
   validate(draw, document.location(section.line));
 }
 
+void read_data_uncertainty_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
+  SectionReader reader(document, section);
+  const IniEntry& replicates = reader.required("replicates");
+  campaign.data_uncertainty.replicates = parse_count(replicates.value, reader.location(replicates), replicates.key, 0, 100000);
+  if (const IniEntry* samples = reader.optional("samples")) {
+    campaign.data_uncertainty.samples = parse_count(samples->value, reader.location(*samples), samples->key, 10, 10000000);
+  }
+  reader.reject_unknown_keys("replicates, samples");
+}
+
 CampaignLine read_line_section(const IniDocument& document, const IniSection& section) {
   SectionReader reader(document, section);
   CampaignLine line;
@@ -191,9 +201,21 @@ CampaignLine read_line_section(const IniDocument& document, const IniSection& se
     throw InputError(document.location(section.line),
                      "[" + section.name + "]: expected [line NAME] with a name without blanks, commas or slashes");
   }
-  const IniEntry& distributions = reader.required("distributions");
-  line.distributions_path = resolve(document.path, distributions.value);
-  require_readable_file(reader, distributions, line.distributions_path);
+  // Exactly one source of the line's distributions: a line file, or raw data to fit.
+  const IniEntry* distributions = reader.optional("distributions");
+  const IniEntry* raw = reader.optional("raw");
+  if ((distributions == nullptr) == (raw == nullptr)) {
+    throw InputError(document.location(section.line),
+                     "[" + section.name + "] needs exactly one of 'distributions = <line file>' and 'raw = <raw data file>'" +
+                         (raw != nullptr ? " (both are given)" : ""));
+  }
+  if (distributions != nullptr) {
+    line.distributions_path = resolve(document.path, distributions->value);
+    require_readable_file(reader, *distributions, line.distributions_path);
+  } else {
+    line.raw_path = resolve(document.path, raw->value);
+    require_readable_file(reader, *raw, line.raw_path);
+  }
   if (const IniEntry* correlation = reader.optional("rank_correlation")) {
     if (correlation->value == "none") {
       line.correlation = CorrelationSource::none;
@@ -205,7 +227,7 @@ CampaignLine read_line_section(const IniDocument& document, const IniSection& se
       require_readable_file(reader, *correlation, line.correlation_path);
     }
   }
-  reader.reject_unknown_keys("distributions, rank_correlation");
+  reader.reject_unknown_keys("distributions or raw, rank_correlation");
   return line;
 }
 
@@ -252,12 +274,15 @@ Campaign parse_campaign(const std::string& text, const std::string& path) {
       read_growth_section(document, section, campaign);
     } else if (section.name == "physics_correlation") {
       read_physics_section(document, section, campaign);
+    } else if (section.name == "data_uncertainty") {
+      read_data_uncertainty_section(document, section, campaign);
     } else if (section.name.starts_with("line ")) {
       campaign.lines.push_back(read_line_section(document, section));
     } else {
       throw InputError(document.location(section.line),
                        "unknown section [" + section.name +
-                           "] (expected [campaign], [instrument], [growth], [physics_correlation] or [line NAME])");
+                           "] (expected [campaign], [instrument], [growth], [physics_correlation], [data_uncertainty] or "
+                           "[line NAME])");
     }
   }
   if (!has_campaign) throw InputError(path, "no [campaign] section (name, seed, samples, outputs, output_dir)");
@@ -269,6 +294,11 @@ Campaign parse_campaign(const std::string& text, const std::string& path) {
         throw InputError(document.location(campaign.lines[i].line), "line '" + campaign.lines[i].name + "' repeats");
       }
     }
+  }
+  if (campaign.data_uncertainty.replicates > 0 &&
+      std::none_of(campaign.lines.begin(), campaign.lines.end(), [](const CampaignLine& line) { return !line.raw_path.empty(); })) {
+    throw InputError(path, "[data_uncertainty] resamples the tubes of lines given by raw = FILE, and no line is: remove the "
+                           "section or give a line's raw data");
   }
   const bool wants_growth = std::find(campaign.outputs.begin(), campaign.outputs.end(), "v") != campaign.outputs.end();
   if (wants_growth && campaign.reference_line.empty()) {

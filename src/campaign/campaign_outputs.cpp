@@ -8,6 +8,7 @@
 #include "growthuq/campaign/campaign_report.hpp"
 #include "growthuq/campaign/checkpoint.hpp"
 #include "growthuq/campaign/csv_results.hpp"
+#include "growthuq/campaign/raw_data_outputs.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/io/results_h5.hpp"
@@ -115,6 +116,7 @@ class OutputObserver final : public RunObserver {
     const Campaign& c = campaign_.campaign();
     if (samples_) samples_->finish();
     write_file_atomically(in_directory(c.output_dir, summary_csv_name), summary_csv_text(summaries_), Overwrite::allow);
+    const std::string raw_data_report = write_raw_data_outputs(campaign_, summaries_, h5_ ? &*h5_ : nullptr);
     if (h5_) {
       CampaignMetadata metadata;
       metadata.campaign_text = c.text;
@@ -134,7 +136,7 @@ class OutputObserver final : public RunObserver {
              << ": its predicted median v equals the median of its v_exp, "
              << format_significant(campaign_.experimental_median_growth_rate() * 1e6) << " um/s)\n";
     }
-    report << line_reports_;
+    report << line_reports_ << raw_data_report;
   }
 
   const std::vector<QuantitySummary>& summaries() const { return summaries_; }

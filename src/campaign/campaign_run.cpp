@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "growthuq/campaign/line_source.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/units.hpp"
 #include "growthuq/growth/kappa.hpp"
@@ -65,13 +66,13 @@ PreparedCampaign::PreparedCampaign(Campaign campaign)
   for (const CampaignLine& campaign_line : campaign_.lines) {
     PreparedLine line;
     line.campaign_line = campaign_line;
-    line.distributions = read_line_file(campaign_line.distributions_path);
+    line.distributions = load_line_distributions(campaign_line, campaign_.instrument, line.raw_fit);
     const std::vector<std::string> inputs = variable_names(line.distributions);
     try {
       line.plan = plan_evaluation(available, inputs, campaign_.outputs);
     } catch (const InputError& error) {
       throw InputError(file_location(campaign_.path, campaign_line.line),
-                       "line '" + campaign_line.name + "' (" + campaign_line.distributions_path + "): " + error.problem());
+                       "line '" + campaign_line.name + "' (" + line.distributions.path + "): " + error.problem());
     }
     // Sample what the chosen models read and the outputs that are measurements, nothing else.
     std::vector<std::string> needed(campaign_.outputs);

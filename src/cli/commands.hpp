@@ -25,5 +25,7 @@ int run_correlate(const Arguments& arguments);
 int run_relax(const Arguments& arguments);
 int run_run(const Arguments& arguments);
 int run_tradeoff(const Arguments& arguments);
+int run_synth(const Arguments& arguments);
+int run_fit_line(const Arguments& arguments);
 
 }  // namespace growthuq::cli

@@ -20,6 +20,8 @@ constexpr std::array commands{
     Command{"relax", "fit generalized Maxwell series to force-relaxation curves", growthuq::cli::run_relax},
     Command{"run", "run a campaign: plant lines through the models, summaries and result files", growthuq::cli::run_run},
     Command{"tradeoff", "measured speed/accuracy trade of a campaign over sample counts", growthuq::cli::run_tradeoff},
+    Command{"synth", "draw a SYNTHETIC raw data set (tables, curves) from true line distributions", growthuq::cli::run_synth},
+    Command{"fit-line", "fit a plant line's distributions from its raw data (raw.ini) to a line file", growthuq::cli::run_fit_line},
 };
 
 void print_usage(std::ostream& out) {

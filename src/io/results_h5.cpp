@@ -2,7 +2,9 @@
 
 #include <H5Cpp.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <numeric>
 #include <stdexcept>
@@ -271,6 +273,131 @@ ResultsH5Writer::~ResultsH5Writer() {
   }
   file_.reset();
   std::remove(partial.c_str());
+}
+
+namespace {
+
+// The group at `path` ("a/b/c"), creating missing components.
+H5::Group group_at(H5::H5File& file, const std::string& path) {
+  H5::Group group = file.openGroup("/");
+  std::size_t start = 0;
+  while (start < path.size()) {
+    const std::size_t slash = std::min(path.find('/', start), path.size());
+    const std::string name = path.substr(start, slash - start);
+    if (!name.empty()) group = group.nameExists(name) ? group.openGroup(name) : group.createGroup(name);
+    start = slash + 1;
+  }
+  return group;
+}
+
+// (parent group path, leaf name) of "a/b/leaf".
+std::pair<std::string, std::string> split_path(const std::string& path) {
+  const std::size_t slash = path.rfind('/');
+  if (slash == std::string::npos) return {"", path};
+  return {path.substr(0, slash), path.substr(slash + 1)};
+}
+
+}  // namespace
+
+void ResultsH5Writer::write_table(const std::string& path, const std::vector<ExtraColumn>& columns) {
+  if (!file_) throw std::logic_error("ResultsH5Writer::write_table after finish()");
+  // Row layout: each member 8 bytes (a char* for text, a double or an int64).
+  std::size_t rows = 0;
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    const ExtraColumn& column = columns[c];
+    const std::size_t filled = (column.text.empty() ? 0 : 1) + (column.real.empty() ? 0 : 1) + (column.integer.empty() ? 0 : 1);
+    const std::size_t size = column.text.size() + column.real.size() + column.integer.size();
+    if (filled > 1 || (c > 0 && size != rows)) {
+      throw std::invalid_argument("ResultsH5Writer::write_table " + path + ": column " + column.name +
+                                  " has another length or more than one type");
+    }
+    rows = size;
+  }
+  const std::size_t width = 8 * columns.size();
+  std::vector<unsigned char> buffer(std::max<std::size_t>(1, rows * width));
+  try {
+    H5::CompType type(std::max<std::size_t>(width, 1));
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const ExtraColumn& column = columns[c];
+      const std::size_t offset = 8 * c;
+      if (!column.real.empty() || (column.text.empty() && column.integer.empty())) {
+        type.insertMember(column.name, offset, H5::PredType::NATIVE_DOUBLE);
+        for (std::size_t r = 0; r < column.real.size(); ++r) std::memcpy(&buffer[r * width + offset], &column.real[r], 8);
+      } else if (!column.integer.empty()) {
+        type.insertMember(column.name, offset, H5::PredType::NATIVE_INT64);
+        for (std::size_t r = 0; r < rows; ++r) std::memcpy(&buffer[r * width + offset], &column.integer[r], 8);
+      } else {
+        type.insertMember(column.name, offset, string_type());
+        for (std::size_t r = 0; r < rows; ++r) {
+          const char* text = column.text[r].c_str();
+          std::memcpy(&buffer[r * width + offset], &text, sizeof text);
+        }
+      }
+    }
+    const auto [parent, leaf] = split_path(path);
+    H5::Group group = group_at(file_->file, parent);
+    const hsize_t size = rows;
+    H5::DataSet dataset = group.createDataSet(leaf, type, H5::DataSpace(1, &size));
+    if (rows > 0) dataset.write(buffer.data(), type);
+  } catch (const H5::Exception& error) {
+    rethrow_hdf5(file_->partial, error);
+  }
+}
+
+void ResultsH5Writer::write_array(const std::string& path, const std::vector<double>& values) {
+  if (!file_) throw std::logic_error("ResultsH5Writer::write_array after finish()");
+  try {
+    const auto [parent, leaf] = split_path(path);
+    H5::Group group = group_at(file_->file, parent);
+    write_vector(group, leaf, H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, values);
+  } catch (const H5::Exception& error) {
+    rethrow_hdf5(file_->partial, error);
+  }
+}
+
+void ResultsH5Writer::write_array(const std::string& path, const std::vector<std::int32_t>& values) {
+  if (!file_) throw std::logic_error("ResultsH5Writer::write_array after finish()");
+  try {
+    const auto [parent, leaf] = split_path(path);
+    H5::Group group = group_at(file_->file, parent);
+    write_vector(group, leaf, H5::PredType::STD_I32LE, H5::PredType::NATIVE_INT32, values);
+  } catch (const H5::Exception& error) {
+    rethrow_hdf5(file_->partial, error);
+  }
+}
+
+void ResultsH5Writer::write_attribute(const std::string& path, const std::string& name, const std::string& value) {
+  if (!file_) throw std::logic_error("ResultsH5Writer::write_attribute after finish()");
+  try {
+    const auto [parent, leaf] = split_path(path);
+    H5::Group group = group_at(file_->file, parent);
+    if (!leaf.empty() && group.nameExists(leaf) && group.childObjType(leaf) == H5O_TYPE_DATASET) {
+      H5::DataSet dataset = group.openDataSet(leaf);
+      write_string_attribute(dataset, name, value);
+    } else {
+      H5::Group target = group_at(file_->file, path);
+      write_string_attribute(target, name, value);
+    }
+  } catch (const H5::Exception& error) {
+    rethrow_hdf5(file_->partial, error);
+  }
+}
+
+void ResultsH5Writer::write_attribute(const std::string& path, const std::string& name, double value) {
+  if (!file_) throw std::logic_error("ResultsH5Writer::write_attribute after finish()");
+  try {
+    const auto [parent, leaf] = split_path(path);
+    H5::Group group = group_at(file_->file, parent);
+    if (!leaf.empty() && group.nameExists(leaf) && group.childObjType(leaf) == H5O_TYPE_DATASET) {
+      H5::DataSet dataset = group.openDataSet(leaf);
+      write_f64_attribute(dataset, name, value);
+    } else {
+      H5::Group target = group_at(file_->file, path);
+      write_f64_attribute(target, name, value);
+    }
+  } catch (const H5::Exception& error) {
+    rethrow_hdf5(file_->partial, error);
+  }
 }
 
 }  // namespace growthuq

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "growthuq/core/error.hpp"
@@ -53,6 +54,7 @@ void fit_step(const RelaxationCurve& curve, const RelaxationOptions& options, st
   const PronyFit fit = fit_prony(t, y, fit_options);
   result.points = fit.points;
   result.tau = fit.tau;
+  result.amplitude = fit.amplitude;
   result.einf = fit.einf;
   result.slow_modulus = fit.amplitude.back() * result.modulus0;
   result.viscosity = fit.tau.back() * result.slow_modulus;
@@ -82,6 +84,7 @@ void fit_ramp(const RelaxationCurve& curve, const RelaxationOptions& options, st
   const PronyFit springs = fit_ramp_hold(t, curve.force, before, after, curve.indentation, fit_options);
   result.ramp_time = springs.ramp_time;
   result.rms = springs.rms / curve.force[peak];
+  result.springs = MaxwellModel{springs.einf, springs.amplitude, springs.tau};
   if (!springs.ok) return fail(result, "ramp and hold: " + springs.reason);
 
   std::vector<double> hold_t, y;
@@ -100,6 +103,7 @@ void fit_ramp(const RelaxationCurve& curve, const RelaxationOptions& options, st
   const PronyFit moduli = fit_prony(hold_t, y, fit_options);
   result.points = springs.points;
   result.tau = moduli.tau;
+  result.amplitude = moduli.amplitude;
   result.einf = moduli.einf;
   result.slow_modulus = moduli.amplitude.back() * result.modulus0;
   result.viscosity = moduli.tau.back() * result.slow_modulus;
@@ -134,6 +138,32 @@ CurveFit analyze_relaxation_curve(const RelaxationCurve& curve, const Relaxation
     fail(result, error.what());
   }
   return result;
+}
+
+std::vector<double> fitted_force(const RelaxationCurve& curve, const CurveFit& fit, double poisson) {
+  std::vector<double> force(curve.t.size(), std::numeric_limits<double>::quiet_NaN());
+  if (curve.t.empty()) return force;
+  if (!fit.springs.tau.empty()) {
+    std::vector<double> since_contact;
+    for (const double time : curve.t) since_contact.push_back(time - curve.t.front());
+    const Eigen::MatrixXd basis = maxwell_mode_responses(fit.springs.tau, fit.ramp_time, curve.indentation, since_contact);
+    Eigen::VectorXd stiffness(basis.cols());
+    stiffness(0) = fit.springs.k_inf;
+    for (std::size_t i = 0; i < fit.springs.k.size(); ++i) stiffness(static_cast<Eigen::Index>(i + 1)) = fit.springs.k[i];
+    const Eigen::VectorXd model = basis * stiffness;
+    for (std::size_t i = 0; i < force.size(); ++i) force[i] = model(static_cast<Eigen::Index>(i));
+    return force;
+  }
+  if (fit.tau.empty() || fit.amplitude.size() != fit.tau.size() || !(fit.modulus0 > 0.0)) return force;
+  const auto peak = static_cast<std::size_t>(std::max_element(curve.force.begin(), curve.force.end()) - curve.force.begin());
+  const ShellGeometry shell{curve.turgor, curve.diameter, curve.thickness, curve.probe_radius, poisson};
+  for (std::size_t i = peak; i < curve.t.size(); ++i) {
+    const double since_peak = curve.t[i] - curve.t[peak];
+    double relative = fit.einf;
+    for (std::size_t m = 0; m < fit.tau.size(); ++m) relative += fit.amplitude[m] * std::exp(-since_peak / fit.tau[m]);
+    force[i] = curve.indentation * relaxation_stiffness(fit.modulus0 * relative, shell);
+  }
+  return force;
 }
 
 }  // namespace growthuq

@@ -17,4 +17,13 @@ double relaxation_modulus(double k, const ShellGeometry& shell) {
   return (1.0 - shell.poisson * shell.poisson) * membrane / (2.0 * shell.thickness);
 }
 
+double relaxation_stiffness(double modulus, const ShellGeometry& shell) {
+  const double p = shell.turgor, d = shell.diameter;
+  const double excess = 2.0 * modulus * shell.thickness / (1.0 - shell.poisson * shell.poisson) - p * d;
+  if (!(excess > 0.0)) return 0.0;
+  // x = rho / alpha with 1 / alpha^2 = 16 excess / (3 p d^3).
+  const double x = shell.probe_radius * std::sqrt(16.0 * excess / (3.0 * p * d * d * d));
+  return 0.75 * std::numbers::pi * p * d * arnoldi_phi(x);
+}
+
 }  // namespace growthuq

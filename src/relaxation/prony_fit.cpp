@@ -32,15 +32,29 @@ struct Projection {
 
 // Variable projection: for fixed taus the best non-negative amplitudes and the residual.
 // Columns are scaled to unit norm for NNLS (a slow and a fast exponential differ in norm by
-// orders of magnitude) and the coefficients scaled back.
+// orders of magnitude) and the coefficients scaled back. With A = Q R (thin QR, one
+// Householder pass over the n samples), |A x - y|^2 = |R x - Q^T y|^2 + const for every x, so
+// NNLS runs on the (terms + 1) x (terms + 1) triangle instead of the n x (terms + 1) basis:
+// the active-set walk then costs nothing next to the QR, without squaring the condition
+// number as the normal equations would.
 Projection project(const Eigen::MatrixXd& basis, const Eigen::VectorXd& y) {
   Eigen::VectorXd norms = basis.colwise().norm().transpose();
   for (Eigen::Index j = 0; j < norms.size(); ++j) {
     if (!(norms(j) > 0.0)) norms(j) = 1.0;
   }
   const Eigen::MatrixXd scaled = basis * norms.cwiseInverse().asDiagonal();
+  const Eigen::Index columns = scaled.cols();
+  Eigen::VectorXd coefficients;
+  if (scaled.rows() > columns) {
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(scaled);
+    const Eigen::MatrixXd r = qr.matrixQR().topRows(columns).triangularView<Eigen::Upper>();
+    const Eigen::VectorXd rotated = (qr.householderQ().transpose() * y).head(columns);
+    coefficients = solve_nnls(r, rotated);
+  } else {
+    coefficients = solve_nnls(scaled, y);
+  }
   Projection projection;
-  projection.coefficients = solve_nnls(scaled, y).cwiseQuotient(norms);
+  projection.coefficients = coefficients.cwiseQuotient(norms);
   projection.rss = (basis * projection.coefficients - y).squaredNorm();
   return projection;
 }
@@ -269,12 +283,14 @@ PronyFit fit(const Basis& basis, std::span<const double> values, const PronyFitO
 
 PronyFit fit_prony(std::span<const double> t, std::span<const double> y, const PronyFitOptions& options) {
   validate(t, y, options, "fit_prony");
-  const Basis basis = [t](const std::vector<double>& tau, double) {
-    Eigen::MatrixXd columns(static_cast<Eigen::Index>(t.size()), static_cast<Eigen::Index>(tau.size() + 1));
-    for (std::size_t r = 0; r < t.size(); ++r) {
-      const auto row = static_cast<Eigen::Index>(r);
-      columns(row, 0) = 1.0;
-      for (std::size_t i = 0; i < tau.size(); ++i) columns(row, static_cast<Eigen::Index>(i + 1)) = std::exp(-t[r] / tau[i]);
+  // Eigen's packet exp (SIMD) builds the columns several times faster than scalar std::exp;
+  // the basis is rebuilt for every trial set of taus, so this is most of a fit's time.
+  const Eigen::ArrayXd times = Eigen::Map<const Eigen::ArrayXd>(t.data(), static_cast<Eigen::Index>(t.size()));
+  const Basis basis = [times](const std::vector<double>& tau, double) {
+    Eigen::MatrixXd columns(times.size(), static_cast<Eigen::Index>(tau.size() + 1));
+    columns.col(0).setOnes();
+    for (std::size_t i = 0; i < tau.size(); ++i) {
+      columns.col(static_cast<Eigen::Index>(i + 1)) = (times * (-1.0 / tau[i])).exp().matrix();
     }
     return columns;
   };

@@ -19,7 +19,7 @@ struct CampaignFolder {
   CampaignFolder() {
     fs::remove_all(root);
     fs::create_directories(root / "lines");
-    for (const char* name : {"lines/wt.ini", "lines/m1.ini", "lines/matrix.csv"}) std::ofstream(root / name) << "x\n";
+    for (const char* name : {"lines/wt.ini", "lines/m1.ini", "lines/matrix.csv", "lines/raw.ini"}) std::ofstream(root / name) << "x\n";
   }
   ~CampaignFolder() { fs::remove_all(root); }
   std::string path() const { return (root / "c.ini").string(); }
@@ -99,9 +99,42 @@ TEST_CASE("each mistake is one error naming file and line") {
   CHECK(error_of(replaced(valid, "lines/m1.ini", "lines/missing.ini")).starts_with(file + ":16: distributions = 'lines/missing.ini': expected an existing file"));
   CHECK(error_of(replaced(valid, "reference_line = wt", "reference_line = col0")) == file + ": [growth] reference_line = 'col0': expected one of the campaign's lines");
   CHECK(error_of(replaced(valid, "[line m1]", "[line  wt]")) == file + ":15: line 'wt' repeats");
-  CHECK(error_of(replaced(valid, "[growth]", "[grow]")) == file + ":9: unknown section [grow] (expected [campaign], [instrument], [growth], [physics_correlation] or [line NAME])");
+  CHECK(error_of(replaced(valid, "[growth]", "[grow]")) == file + ":9: unknown section [grow] (expected [campaign], [instrument], [growth], [physics_correlation], [data_uncertainty] or [line NAME])");
   CHECK(error_of(replaced(valid, "reference_line = wt\n", "")) == file + ": output v needs [growth] reference_line: the line whose experimental growth rate calibrates kappa");
   CHECK(error_of(replaced(valid, "[instrument]\nprobe_radius_um = 0.5\n", "")) == file + ": no [instrument] section: probe_radius_um is required (it dominates turgor)");
   CHECK(error_of(valid + "[physics_correlation]\np_MPa = 0.8:0.1\n") == file + ":19: p_MPa = '0.8:0.1': expected a range 'low:high' with 0 < low < high");
   CHECK(error_of(replaced(valid, "output_dir = out/test", "output_dir = out/test\nformats = pdf")) == file + ":7: formats = 'pdf': expected csv, hdf5 or csv,hdf5");
+}
+
+TEST_CASE("a line comes from exactly one of a line file and raw data; the data bootstrap needs raw data") {
+  const CampaignFolder folder;
+  const std::string file = folder.path();
+  const std::string raw = replaced(valid, "[line m1]\ndistributions = lines/m1.ini", "[line m1]\nraw = lines/raw.ini");
+  const Campaign campaign = parse_campaign(raw + "[data_uncertainty]\nreplicates = 200\nsamples = 500\n", file);
+  REQUIRE(campaign.lines.size() == 2);
+  CHECK(campaign.lines[1].distributions_path.empty());
+  CHECK(fs::equivalent(campaign.lines[1].raw_path, folder.root / "lines/raw.ini"));
+  CHECK(campaign.lines[0].raw_path.empty());
+  CHECK(campaign.data_uncertainty.replicates == 200);
+  CHECK(campaign.data_uncertainty.samples == 500);
+  CHECK(parse_campaign(raw, file).data_uncertainty.replicates == 0);
+
+  auto error_of = [&](const std::string& text) -> std::string {
+    try {
+      parse_campaign(text, file);
+    } catch (const InputError& error) {
+      return error.what();
+    }
+    return "no error";
+  };
+  CHECK(error_of(replaced(raw, "raw = lines/raw.ini", "raw = lines/raw.ini\ndistributions = lines/m1.ini")) ==
+        file + ":15: [line m1] needs exactly one of 'distributions = <line file>' and 'raw = <raw data file>' (both are given)");
+  CHECK(error_of(replaced(raw, "raw = lines/raw.ini\n", "")) ==
+        file + ":15: [line m1] needs exactly one of 'distributions = <line file>' and 'raw = <raw data file>'");
+  CHECK(error_of(replaced(raw, "lines/raw.ini", "lines/none.ini")).starts_with(file + ":16: raw = 'lines/none.ini': expected an existing file"));
+  CHECK(error_of(valid + "[data_uncertainty]\nreplicates = 10\n") ==
+        file + ": [data_uncertainty] resamples the tubes of lines given by raw = FILE, and no line is: remove the section or give a line's raw data");
+  CHECK(error_of(raw + "[data_uncertainty]\nsamples = 10\n") == file + ":18: [data_uncertainty] lacks the required key 'replicates'");
+  CHECK(error_of(raw + "[data_uncertainty]\nreplicates = 10\nsamples = 5\n") ==
+        file + ":20: samples = '5': expected a whole number from 10 to 10000000");
 }

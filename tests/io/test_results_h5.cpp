@@ -345,3 +345,60 @@ TEST_CASE("bad line names and repeated lines are input errors; a bad directory t
 
   CHECK_THROWS_AS(ResultsH5Writer(scratch.path("no/such/dir/results.h5"), Overwrite::refuse), InputError);
 }
+
+TEST_CASE("additional tables, arrays and attributes read back exactly") {
+  const Scratch scratch("extra");
+  const std::string path = scratch.path("results.h5");
+  {
+    ResultsH5Writer writer(path, Overwrite::refuse);
+    writer.write_table("lines/extra/fits", {ExtraColumn{"variable", {"k", "d0", "einf"}},
+                                            ExtraColumn{"aic", {}, {12.5, missing, -3.25}},
+                                            ExtraColumn{"n", {}, {}, {57, 46, -1}}});
+    writer.write_array("lines/extra/points/t_s", std::vector<double>{0.0, 0.02, missing});
+    writer.write_array("lines/extra/points/curve_index", std::vector<std::int32_t>{0, 0, 7});
+    writer.write_attribute("lines/extra/points", "fit", "step");
+    writer.write_attribute("lines/extra/points/t_s", "scale", 2.5);
+    CHECK_THROWS_AS(writer.write_table("lines/extra/fits", {ExtraColumn{"n", {}, {1.0}}}), InputError);  // written twice
+    CHECK_THROWS_AS(writer.write_table("bad", {ExtraColumn{"a", {}, {1.0}}, ExtraColumn{"b", {}, {1.0, 2.0}}}),
+                    std::invalid_argument);
+    writer.finish(CampaignMetadata{});
+  }
+  const H5::H5File file(path, H5F_ACC_RDONLY);
+  const H5::DataSet fits = file.openDataSet("lines/extra/fits");
+  const H5::CompType stored = fits.getCompType();
+  REQUIRE(stored.getNmembers() == 3);
+  CHECK(stored.getMemberName(0) == "variable");
+  CHECK(stored.getMemberName(1) == "aic");
+  CHECK(stored.getMemberName(2) == "n");
+  struct Row {
+    char* variable;
+    double aic;
+    std::int64_t n;
+  };
+  H5::StrType text(H5::PredType::C_S1, H5T_VARIABLE);
+  text.setCset(H5T_CSET_UTF8);  // as written: HDF5 does not convert between character sets
+  H5::CompType memory(sizeof(Row));
+  memory.insertMember("variable", HOFFSET(Row, variable), text);
+  memory.insertMember("aic", HOFFSET(Row, aic), H5::PredType::NATIVE_DOUBLE);
+  memory.insertMember("n", HOFFSET(Row, n), H5::PredType::NATIVE_INT64);
+  std::vector<Row> rows(3);
+  fits.read(rows.data(), memory);
+  CHECK(std::string(rows[0].variable) == "k");
+  CHECK(std::string(rows[2].variable) == "einf");
+  CHECK(rows[0].aic == 12.5);
+  CHECK(std::isnan(rows[1].aic));
+  CHECK(rows[2].aic == -3.25);
+  CHECK(rows[1].n == 46);
+  CHECK(rows[2].n == -1);
+  H5Dvlen_reclaim(memory.getId(), fits.getSpace().getId(), H5P_DEFAULT, rows.data());
+
+  const std::vector<double> t = read_doubles(file.openDataSet("lines/extra/points/t_s"));
+  check_same(t, {0.0, 0.02, missing});
+  const H5::DataSet index = file.openDataSet("lines/extra/points/curve_index");
+  CHECK(index.getDataType() == H5::PredType::STD_I32LE);
+  std::vector<std::int32_t> indices(3);
+  index.read(indices.data(), H5::PredType::NATIVE_INT32);
+  CHECK(indices == std::vector<std::int32_t>{0, 0, 7});
+  CHECK(read_string(file.openGroup("lines/extra/points"), "fit") == "step");
+  CHECK(read_scalar<double>(file.openDataSet("lines/extra/points/t_s"), "scale", H5::PredType::NATIVE_DOUBLE) == 2.5);
+}

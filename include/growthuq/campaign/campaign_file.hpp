@@ -32,10 +32,19 @@ enum class Fidelity { thin_shell };
 
 struct CampaignLine {
   std::string name;                // from the section header [line NAME]
-  std::string distributions_path;  // resolved against the campaign file's folder
+  std::string distributions_path;  // resolved against the campaign file's folder; empty with raw_path
+  std::string raw_path;            // raw = FILE (rawdata/raw_line_file.hpp): distributions fitted
+                                   // from raw data; exactly one of the two paths is set
   CorrelationSource correlation = CorrelationSource::none;
   std::string correlation_path;    // when correlation == file, resolved like distributions_path
   long line = 0;                   // line of the section header, for messages
+};
+
+// [data_uncertainty]: a parametric bootstrap over tubes for lines given by raw data
+// (campaign/data_uncertainty.hpp); replicates = 0 (the default) switches it off.
+struct DataUncertaintySettings {
+  std::size_t replicates = 0;  // refitted lines per raw line
+  std::size_t samples = 0;     // Latin hypercube samples per line and replicate; 0: the campaign's
 };
 
 struct OutputFormats {
@@ -59,6 +68,7 @@ struct Campaign {
   MechanicalDrawOptions physics_correlation;  // p, E ranges and draw count for `physics` lines
   std::string output_dir;             // relative to the current directory
   OutputFormats formats;
+  DataUncertaintySettings data_uncertainty;
   std::vector<CampaignLine> lines;    // in file order
 
   const CampaignLine* find_line(std::string_view name) const;

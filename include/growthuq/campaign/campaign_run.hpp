@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -22,6 +23,7 @@
 #include "growthuq/growth/viscosity.hpp"
 #include "growthuq/mechanics/thin_shell_evaluators.hpp"
 #include "growthuq/pool/pool.hpp"
+#include "growthuq/rawdata/raw_line_fit.hpp"
 #include "growthuq/sampling/line_design.hpp"
 
 namespace growthuq {
@@ -30,6 +32,7 @@ namespace growthuq {
 struct PreparedLine {
   CampaignLine campaign_line;
   LineDistributions distributions;
+  std::shared_ptr<const RawLineFit> raw_fit;  // the fits behind `distributions` for raw = FILE lines
   // The line-file variables the run samples (those the models read, plus outputs that are
   // measurements), in line-file order. Unneeded variables are not sampled, so a turgor-only
   // campaign runs on lines without thickness or relaxation data.

@@ -42,6 +42,15 @@
 
 namespace growthuq {
 
+// A column of an additional table (ResultsH5Writer::write_table): exactly one of the vectors is
+// filled, giving the member type: variable-length UTF-8 text, float64 or int64.
+struct ExtraColumn {
+  std::string name;
+  std::vector<std::string> text{};
+  std::vector<double> real{};
+  std::vector<std::int64_t> integer{};
+};
+
 struct CampaignMetadata {
   std::string campaign_text, campaign_path, command_line, engine_version;
   std::uint64_t seed = 0;
@@ -61,6 +70,18 @@ class ResultsH5Writer {
   // written twice; std::invalid_argument when columns and status differ in length.
   void write_line(const LineResult& result, const std::vector<QuantitySummary>& summaries,
                   const LineAnalysis& analysis);
+
+  // Additional content next to the campaign layout (e.g. the fits of raw-data lines, written
+  // by campaign/raw_data_outputs.cpp), at slash-separated paths from the root; missing groups
+  // are created. A table is a compound dataset with one member per column (all columns of equal
+  // length; std::invalid_argument otherwise), readable as pandas.DataFrame(f[path][:]).
+  // InputError naming the file for HDF5 failures (e.g. a path written twice).
+  void write_table(const std::string& path, const std::vector<ExtraColumn>& columns);
+  void write_array(const std::string& path, const std::vector<double>& values);        // float64
+  void write_array(const std::string& path, const std::vector<std::int32_t>& values);  // int32
+  // A string or float64 attribute on the group or dataset at `path` (created as a group if missing).
+  void write_attribute(const std::string& path, const std::string& name, const std::string& value);
+  void write_attribute(const std::string& path, const std::string& name, double value);
 
   // Writes /summary and the root attributes, closes the file and renames it to `path`.
   // Calling anything after finish() is a std::logic_error.

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "growthuq/relaxation/curves.hpp"
+#include "growthuq/relaxation/simulator.hpp"
 
 namespace growthuq {
 
@@ -22,6 +23,7 @@ struct CurveFit {
   bool ok = false;
   std::string reason;             // why not ok
   std::vector<double> tau;        // s, fastest first
+  std::vector<double> amplitude;  // of each exp(-t / tau_i) in E_r(t) / E_r(0), same order
   double einf = 0.0;              // E_inf / E_r(0)
   double modulus0 = 0.0;          // E_r(0) (Pa): first sample of the hold (step fit) or the
                                   // instantaneous modulus of the fitted springs (ramp-aware)
@@ -33,6 +35,8 @@ struct CurveFit {
   double aic = 0.0;
   double ramp_time = 0.0;         // s: first sample to force maximum (step), fitted (ramp-aware)
   std::size_t points = 0;         // samples fitted
+  MaxwellModel springs;           // ramp-aware only: the contact fitted to the force (k_inf, k_i
+                                  // in N/m, tau_i in s), its ramp ending at ramp_time
 };
 
 // Hold = samples from the force maximum on (t = 0 there, E_r(0) its modulus); ramp time =
@@ -43,5 +47,13 @@ struct CurveFit {
 // Ramp-aware: the springs fitted to the force are turned into a step response k(t), mapped to
 // E_r(t) / E_r(0) and fitted like a step (see the .cpp), so both fits report the same quantity.
 CurveFit analyze_relaxation_curve(const RelaxationCurve& curve, const RelaxationOptions& options);
+
+// The fitted model as a force at every sample of `curve` (N), for plotting a fit over its
+// data. Step fit: from the force maximum on, F = delta k(E_r(0) [e_inf + sum_i a_i
+// exp(-(t - t_peak) / tau_i)]) with k(E_r) the forward Arnoldi relation at the curve's p, d,
+// h, rho (relaxation_stiffness); NaN before the maximum, which the step fit does not model.
+// Ramp-aware fit: the fitted springs' ramp-and-hold force at every sample. All NaN for a fit
+// without parameters (e.g. a hold too short to fit).
+std::vector<double> fitted_force(const RelaxationCurve& curve, const CurveFit& fit, double poisson);
 
 }  // namespace growthuq

@@ -17,4 +17,10 @@ struct ShellGeometry {
 // al. 2000 solved for E). k = 0 gives the membrane limit (1 - nu^2) p d / (2 h).
 double relaxation_modulus(double k, const ShellGeometry& shell);
 
+// The forward relation, inverse of relaxation_modulus: the probe stiffness k (N/m) of a wall of
+// modulus E_r (Pa) at fixed p, d, h, rho: alpha^2 = 3 p d^3 / (16 (2 E_r h / (1 - nu^2) - p d)),
+// k = (3 pi / 4) p d phi(rho / alpha) (Arnoldi et al. 2000). At or below the membrane limit
+// (1 - nu^2) p d / (2 h) alpha is unbounded and k = 0.
+double relaxation_stiffness(double modulus, const ShellGeometry& shell);
+
 }  // namespace growthuq

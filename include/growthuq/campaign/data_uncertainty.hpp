@@ -1,0 +1,56 @@
+// How much the medians of a campaign move because its raw-data lines were fitted to 20-60
+// tubes: a parametric bootstrap over tubes. The 95 % confidence interval of a median in
+// summary.csv reflects the Monte Carlo error of the campaign's samples only; with laws fitted
+// to a few dozen tubes the data's own uncertainty is usually larger.
+//
+// Replicate b (of [data_uncertainty] replicates): every raw-data line's variables are redrawn,
+// n values each (n = the tubes or fitted curves the line has for that variable), from the law
+// the campaign fitted, and refitted exactly as the campaign did (all candidate families, least
+// AIC); lines given by line files keep their laws. The replicate campaign (same outputs,
+// instrument, correlation targets and kappa calibration on the reference line) is sampled with
+// its own seed, counter_bits(derive_key(mix64(seed), "data_uncertainty"), b), at [data_uncertainty]
+// samples per line, and the median of each output is taken as summary.csv takes it. The 2.5 and
+// 97.5 % quantiles of the replicate medians form the percentile interval (Efron & Tibshirani
+// 1993, ch. 13): it holds the data's and the replicates' Monte Carlo uncertainty together. Curve
+// fits are not redone: the spread of the fitted tau and einf already holds their measurement
+// error, and a replicate redraws from that spread. A replicate that fails (e.g. no sample of the
+// reference line grows, so kappa cannot be calibrated) is counted and left out.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "growthuq/campaign/campaign_run.hpp"
+
+namespace growthuq {
+
+struct DataUncertainty {
+  std::string line;
+  std::string quantity;
+  std::string unit;             // symbol, as in summary.csv
+  std::size_t replicates = 0;   // replicates that gave a median
+  std::size_t failed = 0;       // replicates that failed or had no counted sample
+  std::size_t samples = 0;      // per line and replicate
+  double low = std::numeric_limits<double>::quiet_NaN();   // 2.5 % of the replicate medians
+  double high = std::numeric_limits<double>::quiet_NaN();  // 97.5 %
+  double sd = std::numeric_limits<double>::quiet_NaN();    // standard deviation of the replicate medians
+  std::vector<double> replicate_medians;                   // of the successful replicates, in order
+  // The campaign's own median and its Monte Carlo 95 % CI (summary.csv), next to the interval
+  // for reports; filled by the outputs (raw_data_outputs.hpp), NaN until then.
+  double median = std::numeric_limits<double>::quiet_NaN();
+  double median_ci_low = std::numeric_limits<double>::quiet_NaN();
+  double median_ci_high = std::numeric_limits<double>::quiet_NaN();
+};
+
+struct DataUncertaintyResult {
+  std::vector<DataUncertainty> rows;     // per line (run order) and output (campaign order)
+  std::vector<std::string> failures;     // the first few reasons replicates failed
+};
+
+// Runs the bootstrap of `campaign` (replicates and samples from its [data_uncertainty]
+// settings; nothing when replicates = 0). Serial; called on the coordinating process.
+DataUncertaintyResult estimate_data_uncertainty(const PreparedCampaign& campaign);
+
+}  // namespace growthuq

@@ -1,0 +1,52 @@
+// The outputs a campaign adds for lines given by raw data (raw = FILE) once its lines are done:
+// the fit report on stdout, the fits, the curves and their fitted models in results.h5, and the
+// data-uncertainty bootstrap (data_uncertainty.hpp) as data_uncertainty.csv, in results.h5 and
+// on stdout. Nothing for a campaign without raw-data lines.
+//
+// results.h5 (in addition to the campaign layout; NaN for undefined numbers):
+//   /lines/<line>/fits                 one row per variable: variable, unit, family, parameters
+//                                      (text), n (int64), log_likelihood, aic, ks, ad, source
+//   /lines/<line>/fit_candidates       one row per variable and family tried: variable, family,
+//                                      status ("ok" or "failed"), parameters, n, log_likelihood,
+//                                      aic, delta_aic (to the chosen family), ks, ad, reason
+//   /lines/<line>/relaxation/fits      one row per curve, the columns of `growthuq relax` (curve,
+//                                      status, reason, terms, tau_fast_s, tau_mid_s, tau_slow_s,
+//                                      einf_frac, E0_MPa, eta_MPa_s, Er0_MPa, tau_slow_se_pct, rms,
+//                                      aic, ramp_time_s, points) and the tube sheet (delta_um,
+//                                      p_MPa, d_um, h_nm, rho_um); group attributes fit ("step" or
+//                                      "ramp_aware"), terms, curves_path
+//   /lines/<line>/relaxation/points/   the curves in long format: curve_index (int32, row of the
+//                                      fits table), t_s, F_uN (data), F_fit_uN (the fitted model at
+//                                      the point, relaxation/analysis.hpp fitted_force; NaN before
+//                                      the force maximum for the step fit)
+//   /data_uncertainty                  one row per line and output: line, quantity, unit, median,
+//                                      median_ci_low, median_ci_high (the Monte Carlo CI of
+//                                      summary.csv), data_ci_low, data_ci_high, data_sd,
+//                                      replicates, failed_replicates, samples_per_replicate
+//                                      (attribute method); also under /lines/<line>/data_uncertainty
+//   /lines/<line>/data_uncertainty_replicates/<quantity>   float64, the successful replicates'
+//                                      medians (attribute unit), for plots and other intervals
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "growthuq/campaign/campaign_run.hpp"
+#include "growthuq/campaign/data_uncertainty.hpp"
+#include "growthuq/campaign/line_result.hpp"
+#include "growthuq/io/results_h5.hpp"
+
+namespace growthuq {
+
+inline constexpr const char* data_uncertainty_csv_name = "data_uncertainty.csv";
+
+// Writes what is above (h5 may be null: no results.h5 this run; data_uncertainty.csv goes to the
+// campaign's output directory) and returns the report text for stdout (empty without raw lines).
+// `summaries` are the campaign's rows of summary.csv.
+std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<const QuantitySummary> summaries,
+                                   ResultsH5Writer* h5);
+
+// The data-uncertainty rows as CSV text (the columns of /data_uncertainty above).
+std::string data_uncertainty_csv_text(std::span<const DataUncertainty> rows);
+
+}  // namespace growthuq

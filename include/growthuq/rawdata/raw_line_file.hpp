@@ -1,0 +1,64 @@
+// A plant line's raw data file (raw.ini): where a lab's per-tube measurement tables and
+// force-relaxation curves are and what their columns hold, so that the line's distributions
+// can be fitted from them (raw_line_fit.hpp) instead of being typed in as medians and IQRs.
+// Validated as strictly as line files; the format is documented in the README ("From your
+// lab's data").
+//
+//   [line]                      name = wild_type, description = ... (optional)
+//   [measurement VARIABLE]      one per variable measured tube by tube (k, h, d, d0, v_exp; tau
+//                               and einf too when a lab has fitted its curves elsewhere):
+//                               file = CSV, column = header name, unit = unit of the values,
+//                               families = subset of lognormal, normal, gamma, weibull (optional)
+//   [relaxation]                optional; gives tau and einf: curves = CSV (curve,t_s,F_uN),
+//                               meta = CSV (curve,delta_um,p_MPa,d_um,h_nm[,rho_um]; optional when
+//                               the curves file has those columns), terms = 1|2|3 (2),
+//                               fit = step|ramp_aware (step), families = ... (optional)
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "growthuq/core/units.hpp"
+#include "growthuq/distributions/fit.hpp"
+
+namespace growthuq {
+
+// One variable measured tube by tube: a column of a CSV table.
+struct RawMeasurement {
+  std::string variable;             // k, h, d, d0, tau, einf or v_exp
+  std::string file;                 // resolved against the raw file's folder
+  std::string column;               // header name in `file`
+  const Unit* unit = nullptr;       // of the values, of the variable's dimension
+  std::vector<FitFamily> families;  // compared by AIC; all four unless restricted
+  long line = 0;                    // of the section header, for messages
+};
+
+// Force-relaxation curves, fitted curve by curve to give the line's tau and einf.
+struct RawRelaxation {
+  std::string curves;               // resolved like RawMeasurement::file
+  std::string meta;                 // empty: metadata columns are in the curves file
+  int terms = 2;                    // exponentials of the Prony series
+  bool ramp_aware = false;          // fit = ramp_aware
+  std::vector<FitFamily> families;  // for the tau and einf laws
+  long line = 0;
+};
+
+struct RawLineFile {
+  std::string path;  // as given
+  std::string name;
+  std::string description;
+  std::vector<RawMeasurement> measurements;  // in file order
+  bool has_relaxation = false;
+  RawRelaxation relaxation;
+
+  // The variables the file provides (the relaxation's tau and einf included), in file order.
+  std::vector<std::string> variables() const;
+};
+
+// Reads and validates `path`: unknown sections or keys, a variable given twice (or tau/einf both
+// as a measurement and by [relaxation]), a unit of the wrong dimension, a missing or unreadable
+// file, an unknown family: each an InputError naming the raw file, line, key and value. The
+// tables' columns are checked when the data are read (fit_raw_line), naming the table.
+RawLineFile read_raw_line_file(const std::string& path);
+
+}  // namespace growthuq

@@ -1,0 +1,237 @@
+#include "growthuq/campaign/raw_data_outputs.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+
+#include "growthuq/core/numbers.hpp"
+#include "growthuq/io/csv.hpp"
+#include "growthuq/io/output_file.hpp"
+#include "growthuq/rawdata/raw_line_fit.hpp"
+#include "growthuq/relaxation/analysis.hpp"
+
+namespace growthuq {
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+std::string cell(double value) { return std::isfinite(value) ? format_double(value) : std::string(); }
+
+std::string significant(double value) {
+  if (!std::isfinite(value)) return "-";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
+
+std::string padded(const std::string& text, std::size_t width) {
+  return text.size() >= width ? text + " " : text + std::string(width - text.size(), ' ');
+}
+
+void write_fits(ResultsH5Writer& h5, const std::string& line, const RawLineFit& fit) {
+  ExtraColumn variable{"variable"}, unit{"unit"}, family{"family"}, parameters{"parameters"}, n{"n"},
+      log_likelihood{"log_likelihood"}, aic{"aic"}, ks{"ks"}, ad{"ad"}, source{"source"};
+  ExtraColumn c_variable{"variable"}, c_family{"family"}, c_status{"status"}, c_parameters{"parameters"}, c_n{"n"},
+      c_log_likelihood{"log_likelihood"}, c_aic{"aic"}, c_delta{"delta_aic"}, c_ks{"ks"}, c_ad{"ad"}, c_reason{"reason"};
+  for (const VariableFit& v : fit.variables) {
+    const FitResult& best = v.best();
+    variable.text.push_back(v.variable);
+    unit.text.emplace_back(v.unit->symbol);
+    family.text.emplace_back(to_string(best.family));
+    parameters.text.push_back(distribution_parameters(best.distribution));
+    n.integer.push_back(static_cast<std::int64_t>(best.sample_size));
+    log_likelihood.real.push_back(best.log_likelihood);
+    aic.real.push_back(best.aic);
+    ks.real.push_back(best.ks_statistic);
+    ad.real.push_back(best.ad_statistic);
+    source.text.push_back(v.source);
+    for (const FamilyFit& candidate : v.candidates) {
+      const bool ok = candidate.result.has_value();
+      c_variable.text.push_back(v.variable);
+      c_family.text.emplace_back(to_string(candidate.family));
+      c_status.text.emplace_back(ok ? "ok" : "failed");
+      c_parameters.text.push_back(ok ? distribution_parameters(candidate.result->distribution) : std::string());
+      c_n.integer.push_back(static_cast<std::int64_t>(v.values.size()));
+      c_log_likelihood.real.push_back(ok ? candidate.result->log_likelihood : nan);
+      c_aic.real.push_back(ok ? candidate.result->aic : nan);
+      c_delta.real.push_back(ok ? candidate.result->aic - best.aic : nan);
+      c_ks.real.push_back(ok ? candidate.result->ks_statistic : nan);
+      c_ad.real.push_back(ok ? candidate.result->ad_statistic : nan);
+      c_reason.text.push_back(candidate.failure);
+    }
+  }
+  const std::string group = "lines/" + line + "/";
+  h5.write_table(group + "fits", {variable, unit, family, parameters, n, log_likelihood, aic, ks, ad, source});
+  h5.write_table(group + "fit_candidates",
+                 {c_variable, c_family, c_status, c_parameters, c_n, c_log_likelihood, c_aic, c_delta, c_ks, c_ad, c_reason});
+}
+
+void write_relaxation(ResultsH5Writer& h5, const std::string& line, const RawLineFit& fit) {
+  const RelaxationFits& relaxation = *fit.relaxation;
+  const int terms = relaxation.options.terms;
+  std::vector<ExtraColumn> table{{"curve"}, {"status"}, {"reason"}, {"terms"}, {"tau_fast_s"}, {"tau_mid_s"},
+                                 {"tau_slow_s"}, {"einf_frac"}, {"E0_MPa"}, {"eta_MPa_s"}, {"Er0_MPa"},
+                                 {"tau_slow_se_pct"}, {"rms"}, {"aic"}, {"ramp_time_s"}, {"points"}, {"delta_um"},
+                                 {"p_MPa"}, {"d_um"}, {"h_nm"}, {"rho_um"}};
+  ExtraColumn index{"curve_index"}, t{"t_s"}, force{"F_uN"}, fitted{"F_fit_uN"};
+  std::vector<std::int32_t> curve_index;
+  for (std::size_t c = 0; c < relaxation.curves.size(); ++c) {
+    const RelaxationCurve& curve = relaxation.curves[c];
+    const CurveFit& f = relaxation.fits[c];
+    const bool fitted_ok = f.ok && !f.tau.empty();
+    const auto value = [&](bool present, double x) { return present && std::isfinite(x) ? x : nan; };
+    table[0].text.push_back(f.curve);
+    table[1].text.emplace_back(f.ok ? "ok" : "fit_failed");
+    table[2].text.push_back(f.reason);
+    table[3].integer.push_back(terms);
+    table[4].real.push_back(value(fitted_ok && terms > 1, f.tau.empty() ? nan : f.tau.front()));
+    table[5].real.push_back(value(fitted_ok && terms == 3, f.tau.size() == 3 ? f.tau[1] : nan));
+    table[6].real.push_back(value(fitted_ok, f.tau.empty() ? nan : f.tau.back()));
+    table[7].real.push_back(value(fitted_ok, f.einf));
+    table[8].real.push_back(value(fitted_ok, f.slow_modulus * 1e-6));
+    table[9].real.push_back(value(fitted_ok, f.viscosity * 1e-6));
+    table[10].real.push_back(value(fitted_ok, f.modulus0 * 1e-6));
+    table[11].real.push_back(value(fitted_ok, f.tau_slow_relative_se * 100.0));
+    table[12].real.push_back(value(f.points > 0, f.rms));
+    table[13].real.push_back(value(f.points > 0, f.aic));
+    table[14].real.push_back(f.ramp_time);
+    table[15].integer.push_back(static_cast<std::int64_t>(f.points));
+    table[16].real.push_back(curve.indentation * 1e6);
+    table[17].real.push_back(curve.turgor * 1e-6);
+    table[18].real.push_back(curve.diameter * 1e6);
+    table[19].real.push_back(curve.thickness * 1e9);
+    table[20].real.push_back(curve.probe_radius * 1e6);
+    const std::vector<double> model = fitted_force(curve, f, relaxation.options.poisson);
+    for (std::size_t i = 0; i < curve.t.size(); ++i) {
+      curve_index.push_back(static_cast<std::int32_t>(c));
+      t.real.push_back(curve.t[i]);
+      force.real.push_back(curve.force[i] * 1e6);
+      fitted.real.push_back(model[i] * 1e6);
+    }
+  }
+  const std::string group = "lines/" + line + "/relaxation";
+  h5.write_table(group + "/fits", table);
+  h5.write_array(group + "/points/curve_index", curve_index);
+  h5.write_array(group + "/points/t_s", t.real);
+  h5.write_array(group + "/points/F_uN", force.real);
+  h5.write_array(group + "/points/F_fit_uN", fitted.real);
+  h5.write_attribute(group, "fit", relaxation.options.ramp_aware ? "ramp_aware" : "step");
+  h5.write_attribute(group, "terms", static_cast<double>(terms));
+  h5.write_attribute(group, "curves_path", fit.raw.relaxation.curves);
+}
+
+std::vector<ExtraColumn> uncertainty_table(std::span<const DataUncertainty> rows) {
+  std::vector<ExtraColumn> table{{"line"}, {"quantity"}, {"unit"}, {"median"}, {"median_ci_low"}, {"median_ci_high"},
+                                 {"data_ci_low"}, {"data_ci_high"}, {"data_sd"}, {"replicates"}, {"failed_replicates"},
+                                 {"samples_per_replicate"}};
+  for (const DataUncertainty& row : rows) {
+    table[0].text.push_back(row.line);
+    table[1].text.push_back(row.quantity);
+    table[2].text.push_back(row.unit);
+    table[3].real.push_back(row.median);
+    table[4].real.push_back(row.median_ci_low);
+    table[5].real.push_back(row.median_ci_high);
+    table[6].real.push_back(row.low);
+    table[7].real.push_back(row.high);
+    table[8].real.push_back(row.sd);
+    table[9].integer.push_back(static_cast<std::int64_t>(row.replicates));
+    table[10].integer.push_back(static_cast<std::int64_t>(row.failed));
+    table[11].integer.push_back(static_cast<std::int64_t>(row.samples));
+  }
+  return table;
+}
+
+constexpr const char* method_text =
+    "parametric bootstrap over tubes: each replicate redraws every raw-data variable (as many values as the line "
+    "has) from its fitted law, refits it (least AIC), reruns the campaign's models with its own seed and takes the "
+    "median; data_ci_low/high are the 2.5 and 97.5 % quantiles of the replicate medians (percentile interval). It "
+    "holds the uncertainty from fitting finitely many tubes; median_ci_low/high hold the Monte Carlo error only.";
+
+std::string uncertainty_report(std::span<const DataUncertainty> rows, const Campaign& campaign) {
+  if (rows.empty()) return {};
+  std::size_t line_width = 6;
+  for (const DataUncertainty& row : rows) line_width = std::max(line_width, row.line.size() + 2);
+  std::string text = "\ndata uncertainty of the medians (parametric bootstrap over tubes, " +
+                     std::to_string(campaign.data_uncertainty.replicates) + " replicates x " +
+                     std::to_string(rows.front().samples) +
+                     " samples per line; the 95 % CI of summary.csv is Monte Carlo error only):\n" +
+                     padded("line", line_width) + padded("quantity", 10) + padded("unit", 8) + padded("median", 10) +
+                     padded("Monte Carlo 95 % CI", 22) + padded("data 95 % interval", 22) + "replicates\n";
+  for (const DataUncertainty& row : rows) {
+    text += padded(row.line, line_width) + padded(row.quantity, 10) + padded(row.unit, 8) + padded(significant(row.median), 10) +
+            padded("[" + significant(row.median_ci_low) + ", " + significant(row.median_ci_high) + "]", 22) +
+            padded("[" + significant(row.low) + ", " + significant(row.high) + "]", 22) + std::to_string(row.replicates) +
+            (row.failed > 0 ? " (" + std::to_string(row.failed) + " failed)" : std::string()) + "\n";
+  }
+  return text;
+}
+
+}  // namespace
+
+std::string data_uncertainty_csv_text(std::span<const DataUncertainty> rows) {
+  CsvWriter writer({"line", "quantity", "unit", "median", "median_ci_low", "median_ci_high", "data_ci_low",
+                    "data_ci_high", "data_sd", "replicates", "failed_replicates", "samples_per_replicate"});
+  for (const DataUncertainty& row : rows) {
+    writer.add_row({row.line, row.quantity, row.unit, cell(row.median), cell(row.median_ci_low), cell(row.median_ci_high),
+                    cell(row.low), cell(row.high), cell(row.sd), std::to_string(row.replicates),
+                    std::to_string(row.failed), std::to_string(row.samples)});
+  }
+  return writer.text();
+}
+
+std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<const QuantitySummary> summaries,
+                                   ResultsH5Writer* h5) {
+  const Campaign& c = campaign.campaign();
+  std::string report;
+  for (const PreparedLine& line : campaign.lines()) {
+    if (!line.raw_fit) continue;
+    report += "\n" + format_raw_fit_report(*line.raw_fit);
+    if (h5 != nullptr) {
+      write_fits(*h5, line.campaign_line.name, *line.raw_fit);
+      if (line.raw_fit->relaxation) write_relaxation(*h5, line.campaign_line.name, *line.raw_fit);
+    }
+  }
+
+  const std::string csv_path = (std::filesystem::path(c.output_dir) / data_uncertainty_csv_name).string();
+  DataUncertaintyResult uncertainty = estimate_data_uncertainty(campaign);
+  if (uncertainty.rows.empty()) {
+    std::error_code ignored;  // a --force rerun without the bootstrap leaves no stale file behind
+    std::filesystem::remove(csv_path, ignored);
+    return report;
+  }
+  for (DataUncertainty& row : uncertainty.rows) {
+    for (const QuantitySummary& summary : summaries) {
+      if (summary.line == row.line && summary.quantity == row.quantity) {
+        row.median = summary.median;
+        row.median_ci_low = summary.median_ci_low;
+        row.median_ci_high = summary.median_ci_high;
+      }
+    }
+  }
+  write_file_atomically(csv_path, data_uncertainty_csv_text(uncertainty.rows), Overwrite::allow);
+  if (h5 != nullptr) {
+    const std::vector<ExtraColumn> all = uncertainty_table(uncertainty.rows);
+    h5->write_table("data_uncertainty", all);
+    h5->write_attribute("data_uncertainty", "method", std::string(method_text));
+    for (const PreparedLine& line : campaign.lines()) {
+      std::vector<DataUncertainty> rows;
+      for (const DataUncertainty& row : uncertainty.rows) {
+        if (row.line == line.campaign_line.name) rows.push_back(row);
+      }
+      if (rows.empty()) continue;
+      const std::string group = "lines/" + line.campaign_line.name;
+      h5->write_table(group + "/data_uncertainty", uncertainty_table(rows));
+      for (const DataUncertainty& row : rows) {
+        const std::string path = group + "/data_uncertainty_replicates/" + row.quantity;
+        h5->write_array(path, row.replicate_medians);
+        h5->write_attribute(path, "unit", row.unit);
+      }
+    }
+  }
+  report += uncertainty_report(uncertainty.rows, c);
+  for (const std::string& failure : uncertainty.failures) report += "  failed " + failure + "\n";
+  return report;
+}
+
+}  // namespace growthuq

@@ -1,0 +1,172 @@
+// growthuq synth: a realistic SYNTHETIC raw data set (per-tube tables, force-relaxation curves
+// with their tube sheet, growth rates and the raw line file) for plant lines whose TRUE
+// distributions are given as line files, one folder per line (synthetic/synthetic_line.hpp).
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+#include "growthuq/distributions/line_file.hpp"
+#include "growthuq/io/output_file.hpp"
+#include "growthuq/synthetic/synthetic_line.hpp"
+#include "options.hpp"
+
+namespace growthuq::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::string_view location = "growthuq synth";
+
+struct SynthOptions {
+  std::vector<std::string> lines;
+  std::string out;
+  std::string seed = "1";
+  std::string tubes = "20:60";
+  std::string curves = "20:40";
+  double rho_um = 0.5;
+  double nu = 0.2;
+  double hold_s = 30.0;
+  double sample_hz = 50.0;
+  double ramp_um_per_s = 100.0;
+  double set_point_uN = 5.0;
+  double noise_pct = 0.2;
+  bool force = false;
+};
+
+CountRange parse_range(const std::string& text, std::string_view key) {
+  const std::size_t colon = text.find(':');
+  const std::string expected = "a range low:high of whole numbers with 2 <= low <= high <= 100000";
+  if (colon == std::string::npos) throw_bad_value(location, key, text, expected);
+  CountRange range;
+  range.low = parse_count(text.substr(0, colon), location, key, 2, 100000);
+  range.high = parse_count(text.substr(colon + 1), location, key, 2, 100000);
+  if (range.high < range.low) throw_bad_value(location, key, text, expected);
+  return range;
+}
+
+double positive(double value, std::string_view key) {
+  if (!(value > 0.0) || !std::isfinite(value)) throw_bad_value(location, key, format_double(value), "a positive number");
+  return value;
+}
+
+SynthSettings settings_of(const SynthOptions& options) {
+  SynthSettings settings;
+  settings.seed = parse_count(options.seed, location, "--seed");
+  settings.tubes = parse_range(options.tubes, "--tubes");
+  settings.curves = parse_range(options.curves, "--curves");
+  settings.probe_radius = positive(options.rho_um, "--rho-um") * 1e-6;
+  if (!(options.nu >= 0.0 && options.nu < 0.5)) throw_bad_value(location, "--nu", format_double(options.nu), "a Poisson ratio in [0, 0.5)");
+  settings.poisson = options.nu;
+  settings.protocol.hold = positive(options.hold_s, "--hold-s");
+  settings.protocol.sample_interval = 1.0 / positive(options.sample_hz, "--sample-hz");
+  settings.protocol.rate = positive(options.ramp_um_per_s, "--ramp-um-per-s") * 1e-6;
+  settings.protocol.set_point = positive(options.set_point_uN, "--set-point-uN") * 1e-6;
+  if (!(options.noise_pct >= 0.0) || !(options.noise_pct < 100.0)) {
+    throw_bad_value(location, "--force-noise-pct", format_double(options.noise_pct), "a percentage in [0, 100)");
+  }
+  settings.force_noise = options.noise_pct * 1e-2;
+  return settings;
+}
+
+// The command that regenerates the set, every setting spelled out (defaults may change between
+// versions; the files must say exactly what made them).
+std::string regenerate_command(const SynthOptions& options, const SynthSettings& settings) {
+  std::string command = "growthuq synth";
+  for (const std::string& line : options.lines) command += " " + line;
+  command += " --seed " + std::to_string(settings.seed) + " --tubes " + options.tubes + " --curves " + options.curves +
+             " --rho-um " + format_double(options.rho_um) + " --nu " + format_double(options.nu) + " --hold-s " +
+             format_double(options.hold_s) + " --sample-hz " + format_double(options.sample_hz) + " --ramp-um-per-s " +
+             format_double(options.ramp_um_per_s) + " --set-point-uN " + format_double(options.set_point_uN) +
+             " --force-noise-pct " + format_double(options.noise_pct) + " --out " + options.out;
+  return command;
+}
+
+}  // namespace
+
+int run_synth(const Arguments& arguments) {
+  SynthOptions options;
+  po::options_description described("options");
+  described.add_options()
+      ("line", po::value(&options.lines)->required()->multitoken(), "TRUE distributions: line files (distributions/<line>.ini)")
+      ("out", po::value(&options.out)->required(), "output folder; each line's files go to OUT/<line name>/")
+      ("seed", po::value(&options.seed)->default_value(options.seed), "seed, 0 to 2^64 - 1; a line's files depend only on it, the line's name and its truth")
+      ("tubes", po::value(&options.tubes)->default_value(options.tubes), "tubes per table and line, drawn uniformly in low:high")
+      ("curves", po::value(&options.curves)->default_value(options.curves), "relaxation curves per line, drawn uniformly in low:high")
+      ("rho-um", po::value(&options.rho_um)->default_value(options.rho_um, "0.5"), "probe radius (um), written to the tube sheet")
+      ("nu", po::value(&options.nu)->default_value(options.nu, "0.2"), "Poisson ratio of the wall")
+      ("hold-s", po::value(&options.hold_s)->default_value(options.hold_s, "30"), "hold after the set point (s); must outlast tau_slow")
+      ("sample-hz", po::value(&options.sample_hz)->default_value(options.sample_hz, "50"), "sampling rate of the exported curves (Hz)")
+      ("ramp-um-per-s", po::value(&options.ramp_um_per_s)->default_value(options.ramp_um_per_s, "100"), "indentation speed of the ramp (um/s)")
+      ("set-point-uN", po::value(&options.set_point_uN)->default_value(options.set_point_uN, "5"), "force that ends the ramp (uN)")
+      ("force-noise-pct", po::value(&options.noise_pct)->default_value(options.noise_pct, "0.2"), "force noise, standard deviation in % of the set point")
+      ("force", po::bool_switch(&options.force), "replace existing files");
+  po::positional_options_description positional;
+  positional.add("line", -1);
+  po::variables_map values;
+  if (!parse_arguments(
+          arguments, "synth", "LINE.ini [LINE.ini ...] --out DIR [options]",
+          "Draws a SYNTHETIC raw data set from the TRUE distributions in each line file, as a lab would hand\n"
+          "it over, one folder per line (DIR/<line>/): indentation.csv (tube, k, d), plasmolysis.csv (tube,\n"
+          "d0), tem_sections.csv (section, h), growth.csv (tube, v_exp), relaxation_curves.csv (curve, t_s,\n"
+          "F_uN) with relaxation_meta.csv (curve, delta_um, p_MPa, d_um, h_nm, rho_um), raw.ini naming them (the\n"
+          "raw line file a campaign reads with raw = FILE), and relaxation_truth.csv (each curve's true tau_slow\n"
+          "and einf, which no lab has; not named by raw.ini). Each quantity is measured on its own tubes and\n"
+          "drawn independently from its true law, rounded to instrument resolution. A relaxation curve is the\n"
+          "simulated ramp and hold of a tube with its own k, d, d0 (p from the thin shell; redrawn until E_r can\n"
+          "relax to its einf above the membrane limit), the line's median h, tau_slow and einf drawn from the\n"
+          "truth and an illustrative fast phase (tau_fast ~0.25 s), with Gaussian force noise. Every file starts\n"
+          "with '#' lines marking it SYNTHETIC, naming the truth and the command that regenerates it (the same\n"
+          "seed gives the same files).",
+          described, positional, values)) {
+    return 0;
+  }
+  const SynthSettings settings = settings_of(options);
+  const Overwrite overwrite = options.force ? Overwrite::allow : Overwrite::refuse;
+  const std::string command = regenerate_command(options, settings);
+
+  std::vector<LineDistributions> truths;
+  for (const std::string& path : options.lines) {
+    truths.push_back(read_line_file(path));
+    for (std::size_t i = 0; i + 1 < truths.size(); ++i) {
+      if (truths[i].name == truths.back().name) {
+        throw_bad_value(location, "line", path, "line files of different lines (" + truths[i].name + " is also in " + truths[i].path + ")");
+      }
+    }
+  }
+  for (const LineDistributions& truth : truths) {
+    if (truth.name.empty() || truth.name.find_first_of("/\\") != std::string::npos || truth.name == "." || truth.name == "..") {
+      throw_bad_value(truth.path, "name", truth.name, "a line name usable as a folder name");
+    }
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  for (const LineDistributions& truth : truths) {
+    const auto line_start = std::chrono::steady_clock::now();
+    const std::vector<SynthFile> files = synthesize_line(truth, settings, command);
+    const fs::path folder = fs::path(options.out) / truth.name;
+    for (const SynthFile& file : files) check_can_write((folder / file.name).string(), overwrite);
+    std::error_code error;
+    fs::create_directories(folder, error);
+    if (error) throw InputError(folder.string(), "cannot create the folder: " + error.message());
+    std::size_t bytes = 0;
+    for (const SynthFile& file : files) {
+      write_file_atomically((folder / file.name).string(), file.text, overwrite);
+      bytes += file.text.size();
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - line_start).count();
+    std::cout << "growthuq synth: " << truth.name << ": " << files.size() << " files, " << (bytes + 512) / 1024
+              << " KiB in " << folder.string() << " (" << format_double(std::round(seconds * 100.0) / 100.0) << " s)\n";
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << "growthuq synth: " << truths.size() << " line(s) in " << format_double(std::round(seconds * 100.0) / 100.0)
+            << " s; every file is marked SYNTHETIC and names the command that regenerates it\n";
+  return 0;
+}
+
+}  // namespace growthuq::cli

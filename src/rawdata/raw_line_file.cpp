@@ -1,0 +1,188 @@
+// Reading raw.ini (format in raw_line_file.hpp and the README). Every key is checked where it
+// stands so that an error names the line a lab has to fix.
+#include "growthuq/rawdata/raw_line_file.hpp"
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+#include "growthuq/io/ini.hpp"
+
+namespace growthuq {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::array<std::string_view, 7> measured_variables{"k", "h", "d", "d0", "tau", "einf", "v_exp"};
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+void reject_unknown_keys(const IniDocument& document, const IniSection& section,
+                         const std::vector<std::string>& allowed) {
+  for (const IniEntry& entry : section.entries) {
+    if (std::find(allowed.begin(), allowed.end(), entry.key) == allowed.end()) {
+      throw InputError(document.location(entry.line), "unknown key '" + entry.key + "' in [" + section.name +
+                                                          "] (allowed: " + joined(allowed) + ")");
+    }
+  }
+}
+
+const IniEntry& required(const IniDocument& document, const IniSection& section, std::string_view key,
+                         std::string_view what) {
+  const IniEntry* entry = section.find(key);
+  if (!entry || entry->value.empty()) {
+    throw InputError(document.location(section.line),
+                     "[" + section.name + "] has no '" + std::string(key) + "': expected " + std::string(what));
+  }
+  return *entry;
+}
+
+// A file named in the raw file, relative to the raw file's folder; it must exist.
+std::string existing_file(const IniDocument& document, const IniEntry& entry) {
+  const fs::path given(entry.value);
+  const std::string path =
+      given.is_absolute() ? given.string() : (fs::path(document.path).parent_path() / given).lexically_normal().string();
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) {
+    throw_bad_value(document.location(entry.line), entry.key, entry.value,
+                    "an existing file (looked for " + path + "; relative paths start at the raw file's folder)");
+  }
+  return path;
+}
+
+std::vector<FitFamily> families_of(const IniDocument& document, const IniSection& section) {
+  const IniEntry* entry = section.find("families");
+  if (!entry) return {std::begin(all_fit_families), std::end(all_fit_families)};
+  std::vector<FitFamily> families;
+  std::string_view rest = entry->value;
+  while (true) {
+    const std::size_t comma = rest.find(',');
+    const std::string_view name = trim(rest.substr(0, comma));
+    const auto family = parse_fit_family(name);
+    if (!family) throw_bad_value(document.location(entry->line), "families", name, "lognormal, normal, gamma or weibull");
+    if (std::find(families.begin(), families.end(), *family) != families.end()) {
+      throw_bad_value(document.location(entry->line), "families", name, "each family once");
+    }
+    families.push_back(*family);
+    if (comma == std::string_view::npos) break;
+    rest.remove_prefix(comma + 1);
+  }
+  return families;
+}
+
+RawMeasurement read_measurement(const IniDocument& document, const IniSection& section) {
+  RawMeasurement measurement;
+  measurement.line = section.line;
+  measurement.variable = std::string(trim(std::string_view(section.name).substr(std::string_view("measurement ").size())));
+  if (std::find(measured_variables.begin(), measured_variables.end(), measurement.variable) == measured_variables.end()) {
+    throw InputError(document.location(section.line),
+                     "[" + section.name + "]: expected [measurement V] with V one of k, h, d, d0, tau, einf, v_exp");
+  }
+  reject_unknown_keys(document, section, {"file", "column", "unit", "families"});
+  measurement.file = existing_file(document, required(document, section, "file", "file = <CSV table>"));
+  measurement.column = required(document, section, "column", "column = <header name in the table>").value;
+  const Quantity& quantity = *find_quantity(measurement.variable);
+  const IniEntry& unit = required(document, section, "unit", "unit = " + std::string(quantity.default_unit) + " (the unit of the column's values)");
+  measurement.unit = &find_unit(unit.value, document.location(unit.line), "unit");
+  if (measurement.unit->dimension != quantity.dimension) {
+    std::vector<std::string> fitting;
+    for (const Unit& candidate : known_units()) {
+      if (candidate.dimension == quantity.dimension) fitting.emplace_back(candidate.symbol);
+    }
+    throw_bad_value(document.location(unit.line), "unit", unit.value,
+                    "a unit of " + std::string(to_string(quantity.dimension)) + " for " + measurement.variable + " (" +
+                        joined(fitting) + ")");
+  }
+  measurement.families = families_of(document, section);
+  return measurement;
+}
+
+RawRelaxation read_relaxation(const IniDocument& document, const IniSection& section) {
+  RawRelaxation relaxation;
+  relaxation.line = section.line;
+  reject_unknown_keys(document, section, {"curves", "meta", "terms", "fit", "families"});
+  relaxation.curves = existing_file(document, required(document, section, "curves", "curves = <CSV curve,t_s,F_uN>"));
+  if (const IniEntry* meta = section.find("meta")) relaxation.meta = existing_file(document, *meta);
+  if (const IniEntry* terms = section.find("terms")) {
+    relaxation.terms = static_cast<int>(parse_count(terms->value, document.location(terms->line), "terms", 1, 3));
+  }
+  if (const IniEntry* fit = section.find("fit")) {
+    if (fit->value == "ramp_aware") {
+      relaxation.ramp_aware = true;
+    } else if (fit->value != "step") {
+      throw_bad_value(document.location(fit->line), "fit", fit->value, "step or ramp_aware");
+    }
+  }
+  relaxation.families = families_of(document, section);
+  return relaxation;
+}
+
+}  // namespace
+
+std::vector<std::string> RawLineFile::variables() const {
+  std::vector<std::string> names;
+  for (const RawMeasurement& measurement : measurements) names.push_back(measurement.variable);
+  if (has_relaxation) {
+    names.emplace_back("tau");
+    names.emplace_back("einf");
+  }
+  return names;
+}
+
+RawLineFile read_raw_line_file(const std::string& path) {
+  const IniDocument document = read_ini(path);
+  RawLineFile raw;
+  raw.path = path;
+  const IniSection* header = nullptr;
+  for (const IniSection& section : document.sections) {
+    if (section.name.empty()) {
+      const IniEntry& first = section.entries.front();
+      throw InputError(document.location(first.line),
+                       "'" + first.key + " = " + first.value + "' comes before any [section]: expected [line] first");
+    }
+    if (section.name == "line") {
+      header = &section;
+      reject_unknown_keys(document, section, {"name", "description"});
+    } else if (section.name.starts_with("measurement ")) {
+      RawMeasurement measurement = read_measurement(document, section);
+      for (const RawMeasurement& earlier : raw.measurements) {
+        if (earlier.variable == measurement.variable) {
+          throw InputError(document.location(section.line), "variable " + measurement.variable + " is measured twice (first at line " +
+                                                                std::to_string(earlier.line) + ")");
+        }
+      }
+      raw.measurements.push_back(std::move(measurement));
+    } else if (section.name == "relaxation") {
+      raw.relaxation = read_relaxation(document, section);
+      raw.has_relaxation = true;
+    } else {
+      throw InputError(document.location(section.line),
+                       "unknown section [" + section.name + "]: expected [line], [measurement VARIABLE] or [relaxation]");
+    }
+  }
+  if (!header) throw InputError(path, "no [line] section: expected [line] with name = <plant line>");
+  raw.name = required(document, *header, "name", "name = <plant line>").value;
+  if (const IniEntry* description = header->find("description")) raw.description = description->value;
+  if (raw.has_relaxation) {
+    for (const RawMeasurement& measurement : raw.measurements) {
+      if (measurement.variable == "tau" || measurement.variable == "einf") {
+        throw InputError(document.location(measurement.line),
+                         "[measurement " + measurement.variable + "] and [relaxation] (line " +
+                             std::to_string(raw.relaxation.line) + ") both give " + measurement.variable +
+                             ": expected one source per variable");
+      }
+    }
+  }
+  if (raw.measurements.empty() && !raw.has_relaxation) {
+    throw InputError(path, "no [measurement VARIABLE] or [relaxation] section: nothing to fit");
+  }
+  return raw;
+}
+
+}  // namespace growthuq

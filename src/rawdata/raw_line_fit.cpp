@@ -1,0 +1,213 @@
+#include "growthuq/rawdata/raw_line_fit.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+#include "growthuq/io/csv.hpp"
+
+namespace growthuq {
+namespace {
+
+// The values of one column, in its unit. Blank cells are tubes where the quantity was not
+// measured; anything else must be a number of the quantity's physical range.
+std::vector<double> read_measurement_column(const RawMeasurement& measurement) {
+  const CsvTable table = read_csv(measurement.file);
+  const std::size_t column = table.column_index(measurement.column);
+  const bool fraction = measurement.variable == "einf";
+  std::vector<double> values;
+  for (std::size_t row = 0; row < table.rows.size(); ++row) {
+    const std::string& cell = table.rows[row][column];
+    if (cell.empty()) continue;
+    const double value = parse_double(cell, table.row_location(row), "column " + measurement.column);
+    const double si = value * measurement.unit->to_si;
+    if (fraction ? !(si >= 0.0 && si < 1.0) : !(value > 0.0)) {
+      throw_bad_value(table.row_location(row), measurement.column, cell,
+                      fraction ? "a rescaled equilibrium modulus in [0, 1) (as a fraction; [0, 100) in %)"
+                               : "a positive " + std::string(find_quantity(measurement.variable)->description));
+    }
+    values.push_back(value);
+  }
+  return values;
+}
+
+std::string format_number(double value, const char* format = "%.4g") {
+  if (!std::isfinite(value)) return "-";
+  char text[48];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
+}
+
+std::string padded(const std::string& text, std::size_t width) {
+  return text.size() >= width ? text + "  " : text + std::string(width - text.size(), ' ');
+}
+
+const Unit& unit_named(std::string_view symbol) { return find_unit(symbol, "unit table", "unit"); }
+
+RelaxationFits fit_curves(const RawLineFile& raw, const RawFitSettings& settings) {
+  RelaxationFits relaxation;
+  relaxation.options.terms = raw.relaxation.terms;
+  relaxation.options.ramp_aware = raw.relaxation.ramp_aware;
+  relaxation.options.poisson = settings.poisson;
+  relaxation.curves = read_relaxation_curves(raw.relaxation.curves, raw.relaxation.meta, settings.probe_radius);
+  relaxation.fits.reserve(relaxation.curves.size());
+  for (const RelaxationCurve& curve : relaxation.curves) {
+    relaxation.fits.push_back(analyze_relaxation_curve(curve, relaxation.options));
+  }
+  return relaxation;
+}
+
+}  // namespace
+
+VariableFit fit_variable_by_aic(std::string variable, const Unit& unit, std::vector<double> values,
+                                std::vector<FitFamily> families, std::string source, std::string_view location) {
+  VariableFit fit;
+  fit.variable = std::move(variable);
+  fit.unit = &unit;
+  fit.source = std::move(source);
+  fit.values = std::move(values);
+  fit.families = std::move(families);
+  double best = std::numeric_limits<double>::infinity();
+  std::string failures;
+  for (const FitFamily family : fit.families) {
+    FamilyFit candidate;
+    candidate.family = family;
+    try {
+      candidate.result = fit_distribution(family, fit.values);
+      if (candidate.result->aic < best) {
+        best = candidate.result->aic;
+        fit.chosen = fit.candidates.size();
+      }
+    } catch (const InputError& error) {
+      candidate.failure = error.problem();
+      failures += (failures.empty() ? "" : "; ") + std::string(to_string(family)) + ": " + error.problem();
+    }
+    fit.candidates.push_back(std::move(candidate));
+  }
+  if (!std::isfinite(best)) {
+    throw InputError(std::string(location), fit.variable + " (" + fit.source + "): no family could be fitted (" + failures + ")");
+  }
+  return fit;
+}
+
+std::size_t RelaxationFits::ok_count() const {
+  std::size_t ok = 0;
+  for (const CurveFit& fit : fits) ok += fit.ok ? 1 : 0;
+  return ok;
+}
+
+LineDistributions line_distributions_of(const RawLineFile& raw, const std::vector<VariableFit>& variables) {
+  LineDistributions line;
+  line.name = raw.name;
+  line.description = raw.description;
+  line.path = raw.path;
+  for (const VariableFit& variable : variables) {
+    const FitResult& best = variable.best();
+    line.variables.push_back(LineVariable{
+        variable.variable, variable.unit, best.distribution,
+        "maximum-likelihood " + std::string(to_string(best.family)) + " fit to " + std::to_string(best.sample_size) +
+            " values of " + variable.source + " (least AIC of " + std::to_string(variable.families.size()) +
+            " families; KS D " + format_number(best.ks_statistic, "%.3g") + ", AD A^2 " +
+            format_number(best.ad_statistic, "%.3g") + ")",
+        "", 0});
+  }
+  return line;
+}
+
+RawLineFit fit_raw_line(const RawLineFile& raw, const RawFitSettings& settings) {
+  RawLineFit result;
+  result.raw = raw;
+  for (const RawMeasurement& measurement : raw.measurements) {
+    result.variables.push_back(fit_variable_by_aic(measurement.variable, *measurement.unit,
+                                                   read_measurement_column(measurement), measurement.families,
+                                                   measurement.file + ", column " + measurement.column,
+                                                   file_location(raw.path, measurement.line)));
+  }
+  if (raw.has_relaxation) {
+    result.relaxation = fit_curves(raw, settings);
+    std::vector<double> tau, einf;
+    for (const CurveFit& fit : result.relaxation->fits) {
+      if (!fit.ok) continue;
+      tau.push_back(fit.tau.back());
+      einf.push_back(fit.einf);
+    }
+    const std::string location = file_location(raw.path, raw.relaxation.line);
+    const std::size_t curves = result.relaxation->curves.size();
+    if (tau.size() < 2) {
+      std::string reasons;
+      for (const CurveFit& fit : result.relaxation->fits) {
+        if (!fit.ok && reasons.size() < 400) reasons += (reasons.empty() ? "" : "; ") + fit.curve + ": " + fit.reason;
+      }
+      throw InputError(location, std::to_string(tau.size()) + " of " + std::to_string(curves) + " curves of " +
+                                     raw.relaxation.curves + " were fitted: expected at least 2 to fit tau and einf (" +
+                                     reasons + ")");
+    }
+    const std::string source = raw.relaxation.curves + ", " + std::to_string(tau.size()) + " of " +
+                               std::to_string(curves) + " curves fitted";
+    result.variables.push_back(fit_variable_by_aic("tau", unit_named("s"), std::move(tau), raw.relaxation.families,
+                                                   "tau_slow of " + source, location));
+    result.variables.push_back(fit_variable_by_aic("einf", unit_named("frac"), std::move(einf), raw.relaxation.families,
+                                                   "E_inf/E_r(0) of " + source, location));
+  }
+  result.distributions = line_distributions_of(raw, result.variables);
+  return result;
+}
+
+std::string distribution_parameters(const Distribution& distribution) {
+  const std::string text = describe(distribution);
+  const std::size_t open = text.find('(');
+  return text.substr(open + 1, text.size() - open - 2);
+}
+
+std::string format_raw_fit_report(const RawLineFit& fit) {
+  std::string text = "line " + fit.raw.name + ": distributions fitted to raw data (" + fit.raw.path +
+                     "), family of least AIC\n";
+  text += "  " + padded("variable", 10) + padded("unit", 6) + padded("n", 5) + padded("family", 11) + padded("median", 10) +
+          padded("IQR", 10) + padded("KS D", 8) + padded("AD A^2", 8) + "AIC of the others (+ = worse)\n";
+  for (const VariableFit& variable : fit.variables) {
+    const FitResult& best = variable.best();
+    const double q1 = quantile(best.distribution, 0.25), q3 = quantile(best.distribution, 0.75);
+    std::string others;
+    for (const FamilyFit& candidate : variable.candidates) {
+      if (candidate.family == best.family) continue;
+      others += (others.empty() ? "" : ", ") + std::string(to_string(candidate.family)) + " " +
+                (candidate.result ? format_number(candidate.result->aic - best.aic, "%+.1f") : "failed: " + candidate.failure);
+    }
+    text += "  " + padded(variable.variable, 10) + padded(std::string(variable.unit->symbol), 6) +
+            padded(std::to_string(best.sample_size), 5) + padded(std::string(to_string(best.family)), 11) +
+            padded(format_number(quantile(best.distribution, 0.5)), 10) + padded(format_number(q3 - q1), 10) +
+            padded(format_number(best.ks_statistic, "%.3f"), 8) + padded(format_number(best.ad_statistic, "%.3f"), 8) +
+            (others.empty() ? "-" : others) + "\n";
+  }
+  if (fit.relaxation) {
+    const RelaxationFits& relaxation = *fit.relaxation;
+    const std::size_t ok = relaxation.ok_count();
+    text += "  relaxation curves: " + std::to_string(relaxation.curves.size()) + ", " + std::to_string(ok) + " fitted (" +
+            std::to_string(relaxation.options.terms) + "-term " + (relaxation.options.ramp_aware ? "ramp-aware" : "step") +
+            " fit), " + std::to_string(relaxation.curves.size() - ok) + " fit_failed (left out of tau and einf)\n";
+    double worst_se = 0.0;
+    for (const CurveFit& curve_fit : relaxation.fits) {
+      if (!curve_fit.ok) {
+        text += "    " + curve_fit.curve + ": fit_failed: " + curve_fit.reason + "\n";
+      } else {
+        worst_se = std::max(worst_se, curve_fit.tau_slow_relative_se);
+      }
+    }
+    if (ok > 0) text += "    largest standard error of a fitted tau_slow: " + format_number(100.0 * worst_se, "%.2g") + " %\n";
+  }
+  return text;
+}
+
+std::string fitted_line_file_text(const RawLineFit& fit) {
+  std::string text = "# Written by growthuq fit-line from " + fit.raw.path +
+                     ": maximum-likelihood fits of the raw data,\n# the family of least AIC for every variable.\n"
+                     "[line]\nname = " + fit.raw.name + "\n";
+  if (!fit.raw.description.empty()) text += "description = " + fit.raw.description + "\n";
+  for (const LineVariable& variable : fit.distributions.variables) text += "\n" + format_line_variable(variable);
+  return text;
+}
+
+}  // namespace growthuq

@@ -1,0 +1,94 @@
+"""Reads the results of tests/campaign/data/raw_campaign.ini with h5py, as the plotting tools do,
+and checks the raw-data layout of results.h5 (campaign/raw_data_outputs.hpp) against the raw
+files themselves. Usage: check_raw_results.py RESULTS_DIR RAW_DIR. Exits non-zero on a mismatch."""
+import csv
+import sys
+
+import h5py
+import numpy as np
+
+
+def expect(condition, what):
+    if not condition:
+        sys.exit("mismatch: " + what)
+
+
+def table(path):
+    with open(path) as f:
+        return list(csv.DictReader(line for line in f if not line.startswith("#")))
+
+
+def text(value):
+    return value.decode() if isinstance(value, bytes) else value
+
+
+results, raw = sys.argv[1], sys.argv[2]
+with h5py.File(results + "/results.h5", "r") as f:
+    wt = f["lines/wild_type"]
+    fits = wt["fits"][:]
+    for field in ["variable", "family", "parameters", "n", "log_likelihood", "aic", "ks", "ad", "unit", "source"]:
+        expect(field in fits.dtype.names, "fits field " + field)
+    variables = [text(v) for v in fits["variable"]]
+    expect(variables == ["k", "d", "d0", "h", "v_exp", "tau", "einf"], "fitted variables " + str(variables))
+    counts = {"k": len(table(raw + "/indentation.csv")), "d0": len(table(raw + "/plasmolysis.csv")),
+              "h": len(table(raw + "/tem_sections.csv")), "v_exp": len(table(raw + "/growth.csv"))}
+    for row in fits:
+        name = text(row["variable"])
+        if name in counts:
+            expect(row["n"] == counts[name], "n of " + name)
+        expect(abs(row["aic"] - (4 - 2 * row["log_likelihood"])) < 1e-9 * abs(row["aic"]), "AIC = 2k - 2 logL for " + name)
+        expect(0 < row["ks"] < 1 and row["ad"] > 0, "KS and AD of " + name)
+    candidates = wt["fit_candidates"][:]
+    for name in variables:
+        rows = candidates[[text(v) == name for v in candidates["variable"]]]
+        expect(len(rows) == 4, "4 candidate families for " + name)
+        ok = rows[[text(s) == "ok" for s in rows["status"]]]
+        expect(np.all(ok["delta_aic"] >= 0) and np.sum(ok["delta_aic"] == 0) == 1, "one least-AIC family for " + name)
+
+    relaxation = wt["relaxation"]
+    expect(text(relaxation.attrs["fit"]) == "step", "fit attribute")
+    curve_fits = relaxation["fits"][:]
+    meta = table(raw + "/relaxation_meta.csv")
+    expect([text(c) for c in curve_fits["curve"]] == [m["curve"] for m in meta], "one fit row per curve, in order")
+    for field in ["status", "reason", "tau_fast_s", "tau_slow_s", "einf_frac", "Er0_MPa", "eta_MPa_s", "delta_um", "p_MPa"]:
+        expect(field in curve_fits.dtype.names, "relaxation fits field " + field)
+    expect(np.allclose(curve_fits["p_MPa"], [float(m["p_MPa"]) for m in meta]), "tube sheet p")
+    fitted = sum(text(s) == "ok" for s in curve_fits["status"])
+    expect(fits[variables.index("tau")]["n"] == fitted, "tau fitted to the ok curves")
+
+    points = relaxation["points"]
+    index, t, force, model = points["curve_index"][:], points["t_s"][:], points["F_uN"][:], points["F_fit_uN"][:]
+    expect(points["curve_index"].dtype == np.int32, "curve_index is int32")
+    expect(len(index) == len(t) == len(force) == len(model), "point arrays of equal length")
+    data = table(raw + "/relaxation_curves.csv")
+    expect(len(data) == len(t), "every sample of the curves file")
+    expect(np.allclose(t, [float(r["t_s"]) for r in data], rtol=0, atol=1e-12), "t_s as in the file")
+    expect(np.allclose(force, [float(r["F_uN"]) for r in data], rtol=1e-12, atol=0), "F_uN as in the file")
+    expect(index.min() == 0 and index.max() == len(curve_fits) - 1, "curve_index spans the fits table")
+    worst = 0.0
+    for c, row in enumerate(curve_fits):
+        mask = index == c
+        fc, m = force[mask], model[mask]
+        peak = int(np.argmax(fc))
+        expect(np.all(np.isnan(m[:peak])), "no step model before the force maximum, curve %d" % c)
+        if text(row["status"]) == "ok":
+            expect(np.all(np.isfinite(m[peak:])), "model over the hold, curve %d" % c)
+            worst = max(worst, np.sqrt(np.mean((m[peak:] - fc[peak:]) ** 2)) / fc[peak])
+    # 0.2 % force noise of the synthetic set: the model follows the data to about that.
+    expect(worst < 0.005, "fitted model follows the ok curves (worst rms %.4f of the peak force)" % worst)
+    expect("fits" not in f["lines/pme48"], "no fits for a line given by its line file")
+
+    uncertainty = f["data_uncertainty"][:]
+    summary = {(r["line"], r["quantity"]): r for r in table(results + "/summary.csv")}
+    csv_rows = table(results + "/data_uncertainty.csv")
+    expect(len(uncertainty) == 8 and len(csv_rows) == 8, "2 lines x 4 outputs")
+    for row, csv_row in zip(uncertainty, csv_rows):
+        key = (text(row["line"]), text(row["quantity"]))
+        expect(key == (csv_row["line"], csv_row["quantity"]), "same rows in CSV and HDF5")
+        expect(row["median"] == float(summary[key]["median"]), "median as in summary.csv " + str(key))
+        expect(row["data_ci_low"] <= row["data_ci_high"], "ordered interval " + str(key))
+        expect(abs(row["data_ci_low"] - float(csv_row["data_ci_low"])) <= 1e-15 * abs(row["data_ci_low"]), "CSV interval")
+        replicates = f["lines/%s/data_uncertainty_replicates/%s" % key][:]
+        expect(len(replicates) == row["replicates"] and row["replicates"] + row["failed_replicates"] == 20, "replicates")
+        expect(abs(np.percentile(replicates, 2.5) - row["data_ci_low"]) <= 1e-12 * abs(row["data_ci_low"]), "2.5 % of replicates")
+print("raw-data results checked with h5py")
