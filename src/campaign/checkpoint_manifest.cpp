@@ -10,6 +10,7 @@
 #include "growthuq/campaign/chunk_log.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/rawdata/raw_line_file.hpp"
 #include "io/read_text_file.hpp"
 
 namespace growthuq {
@@ -109,7 +110,19 @@ CheckpointManifest make_checkpoint_manifest(const Campaign& campaign, const Camp
     if (!seen) manifest.inputs.push_back(fingerprint_file(path));
   };
   for (const CampaignLine& line : campaign.lines) {
-    add(line.distributions_path);
+    if (!line.raw_path.empty()) {
+      // A line fitted from raw data depends on its raw.ini and on every table and curve file
+      // it names: a changed tube table would refit different distributions on resume.
+      const RawLineFile raw = read_raw_line_file(line.raw_path);
+      add(line.raw_path);
+      for (const RawMeasurement& measurement : raw.measurements) add(measurement.file);
+      if (raw.has_relaxation) {
+        add(raw.relaxation.curves);
+        if (!raw.relaxation.meta.empty()) add(raw.relaxation.meta);
+      }
+    } else {
+      add(line.distributions_path);
+    }
     if (line.correlation == CorrelationSource::file) add(line.correlation_path);
   }
   return manifest;

@@ -3,6 +3,7 @@
 // input file changed or vanished.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -14,7 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "growthuq/campaign/campaign_file.hpp"
 #include "growthuq/campaign/checkpoint_manifest.hpp"
+#include "growthuq/rawdata/raw_line_file.hpp"
 #include "growthuq/campaign/chunk_log.hpp"
 #include "growthuq/core/error.hpp"
 
@@ -278,4 +281,25 @@ TEST_CASE("relative paths of a run are found from another working directory") {
   CHECK(locate(manifest, "/abs/w.ini") == "/abs/w.ini");
   manifest.working_directory = fs::current_path().string();
   CHECK(locate(manifest, "campaigns/q.ini") == "campaigns/q.ini");
+}
+
+TEST_CASE("a line fitted from raw data fingerprints its raw.ini and every table and curve file it names") {
+  const std::string path = std::string(GROWTHUQ_SOURCE_DIR) + "/tests/campaign/data/raw_campaign.ini";
+  const Campaign campaign = read_campaign(path);
+  const CheckpointManifest manifest = make_checkpoint_manifest(campaign, CampaignOverrides{}, "growthuq run");
+  const RawLineFile raw = read_raw_line_file(campaign.lines[0].raw_path);
+  std::vector<std::string> expected{raw.path};
+  for (const RawMeasurement& measurement : raw.measurements) expected.push_back(measurement.file);
+  REQUIRE(raw.has_relaxation);
+  expected.push_back(raw.relaxation.curves);
+  if (!raw.relaxation.meta.empty()) expected.push_back(raw.relaxation.meta);
+  std::vector<std::string> fingerprinted;
+  for (const FileFingerprint& input : manifest.inputs) fingerprinted.push_back(input.path);
+  for (const std::string& file : expected) {
+    INFO(file);
+    CHECK(std::count(fingerprinted.begin(), fingerprinted.end(), file) == 1);
+    CHECK(fs::file_size(file) == manifest.inputs[static_cast<std::size_t>(
+                                     std::find(fingerprinted.begin(), fingerprinted.end(), file) - fingerprinted.begin())].bytes);
+  }
+  CHECK(std::count(fingerprinted.begin(), fingerprinted.end(), campaign.lines[1].distributions_path) == 1);
 }

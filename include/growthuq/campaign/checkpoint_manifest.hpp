@@ -2,7 +2,8 @@
 // an interrupted run exactly as the uninterrupted run would have: the campaign text and where it
 // was read from, the command-line overrides, the original command line (results.h5 stores it),
 // the engine version, and a fingerprint of every input file the run reads (line files, matrix
-// files), so that a resume whose inputs changed is refused rather than mixing two campaigns.
+// files, raw-data files and the tables they name), so that a resume whose inputs changed is
+// refused rather than mixing two campaigns.
 //
 // Text format, one `key = value` per line after the first line "growthuq checkpoint 1";
 // values escape backslash, newline and carriage return as \\, \n, \r:
