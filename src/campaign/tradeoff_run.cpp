@@ -55,12 +55,16 @@ std::vector<TradeoffRun> run_tradeoff(const Campaign& campaign, std::span<const 
                                       ProgressMode progress, std::ostream& log) {
   using Clock = std::chrono::steady_clock;
   std::vector<TradeoffRun> runs;
+  // Prepared once: line files or raw-data fits and correlation targets do not depend on the
+  // sample count, and refitting raw data (seconds) at every count would swamp the small runs'
+  // times, which are what the trade is about.
+  Campaign first = campaign;
+  if (!sample_counts.empty()) first.samples = sample_counts.front();
+  PreparedCampaign prepared(std::move(first));
   for (const std::size_t samples : sample_counts) {
     if (progress != ProgressMode::none) log << "tradeoff: " << samples << " samples per line\n" << std::flush;
+    prepared.set_samples(samples);
     const Clock::time_point start = Clock::now();
-    Campaign at_count = campaign;
-    at_count.samples = samples;
-    const PreparedCampaign prepared(std::move(at_count));
     SummaryObserver observer(prepared, progress, log);
     run_campaign_lines(prepared, pool, observer);
     TradeoffRun run;

@@ -63,6 +63,10 @@ class PreparedCampaign {
   // Median of the reference line's v_exp distribution [m/s]; NaN when !calibrates_kappa().
   double experimental_median_growth_rate() const noexcept { return experimental_median_; }
 
+  // Samples per line from now on (growthuq tradeoff runs one preparation at several counts:
+  // line distributions, raw-data fits and correlation targets do not depend on it).
+  void set_samples(std::size_t samples) noexcept { campaign_.samples = samples; }
+
   // The line's design (identical on every process for the same campaign and seed).
   LineDesign design(const PreparedLine& line) const;
 

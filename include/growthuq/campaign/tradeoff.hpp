@@ -19,7 +19,7 @@ namespace growthuq {
 struct TradeoffRun {
   std::string fidelity;     // "analytic" (thin-shell models); a finite-element fidelity joins later
   std::size_t samples = 0;  // per line
-  double seconds = 0;       // wall time of the whole campaign at this count
+  double seconds = 0;       // wall time of the campaign's run at this count (not its preparation)
   std::vector<QuantitySummary> summaries;  // the rows summary.csv would hold
 };
 
