@@ -192,7 +192,8 @@ LineResult start_result(const PreparedCampaign& campaign, const PreparedLine& li
   const std::size_t n = campaign.campaign().samples;
   const auto& variables = line.design_variables.variables;
   for (std::size_t j = 0; j < variables.size(); ++j) {
-    result.columns.push_back(ResultColumn{variables[j].name, variables[j].unit, true, design.values[j]});
+    result.columns.push_back(
+        ResultColumn{variables[j].name, variables[j].unit, true, {design.values[j].begin(), design.values[j].end()}});
   }
   for (const std::string& output : campaign.computed_outputs()) {
     const Quantity* quantity = find_quantity(output);

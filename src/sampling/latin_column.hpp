@@ -12,9 +12,15 @@
 
 namespace growthuq::detail {
 
-// stratum = 0, 1, ..., n-1 shuffled by Fisher-Yates from the last position down, with the
-// draws documented in latin_hypercube.hpp (32-bit Lemire, high half of each draw first).
-// A low half left over at the end is discarded. n = stratum.size() must be in [1, 2^32 - 1].
+// Fisher-Yates from the last position down with the draws documented in latin_hypercube.hpp
+// (32-bit Lemire, high half of each draw first); a low half left over at the end is discarded.
+// The draws do not depend on the elements, so shuffling any array with the same generator
+// state moves its elements exactly as it moves 0, 1, ..., n-1: shuffle(x)[i] = x[shuffle(iota)[i]].
+// values.size() must be in [1, 2^32 - 1].
+void shuffle(std::span<std::uint32_t> values, Mt19937_64Block& random);
+void shuffle(std::span<double> values, Mt19937_64Block& random);
+
+// stratum = 0, 1, ..., n-1 shuffled (above): stratum[i] is the stratum of sample i.
 void shuffle_strata(std::span<std::uint32_t> stratum, Mt19937_64Block& random);
 
 // The points u_k of strata k = first .. first + u.size() - 1 of n, in increasing k, one fresh

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "growthuq/sampling/random_stream.hpp"
 #include "sampling/avx2_clone.hpp"
@@ -16,16 +17,17 @@ namespace growthuq {
 
 namespace detail {
 
-GROWTHUQ_AVX2_CLONE
-void shuffle_strata(std::span<std::uint32_t> stratum, Mt19937_64Block& random) {
-  std::iota(stratum.begin(), stratum.end(), std::uint32_t{0});
-  // Fisher-Yates from the last position down: swap position i with j = below(i + 1) (Lemire
-  // 2019, 32-bit form, on the high then the low half of each 64-bit draw). For large n every
-  // swap is a cache miss. The draws do not depend on the array, so they run one batch ahead of
-  // the swaps: the partners of batch b + 1 are drawn and prefetched while batch b is swapped.
-  // Draws and swaps each happen in the same order as in the plain loop.
+namespace {
+
+// Fisher-Yates from the last position down: swap position i with j = below(i + 1) (Lemire
+// 2019, 32-bit form, on the high then the low half of each 64-bit draw). For large n every
+// swap is a cache miss. The draws do not depend on the array, so they run one batch ahead of
+// the swaps: the partners of batch b + 1 are drawn and prefetched while batch b is swapped.
+// Draws and swaps each happen in the same order as in the plain loop.
+template <class T>
+void fisher_yates(std::span<T> array, Mt19937_64Block& random) {
   constexpr std::size_t batch = 64;
-  std::uint32_t* values = stratum.data();
+  T* values = array.data();
   std::uint32_t partners[2][batch];
   std::uint64_t word_pair = 0;
   bool has_low = false;
@@ -51,7 +53,7 @@ void shuffle_strata(std::span<std::uint32_t> stratum, Mt19937_64Block& random) {
       __builtin_prefetch(values + partner[b], 1);
     }
   };
-  std::size_t i = stratum.size() - 1;
+  std::size_t i = array.size() - 1;
   std::size_t count = std::min(batch, i);
   int current = 0;
   draw(i, count, partners[current]);
@@ -64,6 +66,19 @@ void shuffle_strata(std::span<std::uint32_t> stratum, Mt19937_64Block& random) {
     count = next_count;
     current = 1 - current;
   }
+}
+
+}  // namespace
+
+GROWTHUQ_AVX2_CLONE
+void shuffle(std::span<std::uint32_t> values, Mt19937_64Block& random) { fisher_yates(values, random); }
+
+GROWTHUQ_AVX2_CLONE
+void shuffle(std::span<double> values, Mt19937_64Block& random) { fisher_yates(values, random); }
+
+void shuffle_strata(std::span<std::uint32_t> stratum, Mt19937_64Block& random) {
+  std::iota(stratum.begin(), stratum.end(), std::uint32_t{0});
+  shuffle(stratum, random);
 }
 
 GROWTHUQ_AVX2_CLONE
@@ -113,9 +128,11 @@ LatinColumn latin_hypercube_column(std::size_t n, std::uint64_t key, StratumPosi
     throw std::invalid_argument("latin_hypercube_column: n must be in [1, 2^32 - 1]");
   }
   detail::Mt19937_64Block random(key);
+  std::vector<std::uint32_t> sample_of_stratum(n);
+  detail::shuffle_strata(sample_of_stratum, random);
   LatinColumn column;
   column.stratum.resize(n);
-  detail::shuffle_strata(column.stratum, random);
+  for (std::size_t k = 0; k < n; ++k) column.stratum[sample_of_stratum[k]] = static_cast<std::uint32_t>(k);
   column.u_by_stratum.resize(n);
   detail::stratum_points(random, n, 0, column.u_by_stratum, position);
   return column;

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "growthuq/core/large_vector.hpp"
 #include "growthuq/correlation/iman_conover.hpp"
 #include "growthuq/correlation/matrix_file.hpp"
 #include "growthuq/correlation/rank_correlation_target.hpp"
@@ -32,8 +33,8 @@ struct DesignVariable {
 
 struct LineDesign {
   std::vector<std::string> names;
-  std::vector<std::vector<std::uint32_t>> ranks;  // ranks[j][i]: stratum (= 0-based rank) of sample i in variable j
-  std::vector<std::vector<double>> values;        // values[j][i]: quantile of variable j at sample i's point
+  std::vector<LargeVector<std::uint32_t>> ranks;  // ranks[j][i]: stratum (= 0-based rank) of sample i in variable j
+  std::vector<LargeVector<double>> values;        // values[j][i]: quantile of variable j at sample i's point
   std::optional<ImanConoverTarget> target;        // over `names`, when a correlation was requested
   ImanConoverOutcome correlation;                 // imposed or not, and why not
   std::vector<std::string> warnings;              // for stderr: repaired target, correlation not imposed
