@@ -7,10 +7,14 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <span>
+#include <vector>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
+
+#include "growthuq/core/large_vector.hpp"
 
 namespace growthuq::detail {
 
@@ -18,14 +22,20 @@ namespace growthuq::detail {
 // (score[n - 1 - k] = -score[k] exactly), so the scores sum to zero exactly.
 void fill_van_der_waerden_scores(std::span<double> score);
 
+// The n van der Waerden scores with their sum of squares, computed once per n: the lines of a
+// campaign share n, and so do the repetitions of a benchmark. The last table is kept.
+struct ScoreTable {
+  LargeVector<double> score;
+  double sum_of_squares = 0;
+};
+std::shared_ptr<const ScoreTable> van_der_waerden_table(std::size_t n);
+
 class ScoreReordering {
  public:
-  // `scores` is n x m, column-major: column j holds variable j's scores in sample order, a
-  // permutation of the n van der Waerden scores, whose sum of squares is `sum_of_squares` and
-  // whose largest is `largest_score`. `target` factors the normal-score target R = P P^T.
-  // Computes T = S^T S / sum_of_squares = Q Q^T and the lower triangular mix M = P Q^-1.
-  ScoreReordering(std::span<const double> scores, std::size_t n, std::size_t m, double sum_of_squares,
-                  double largest_score, const Eigen::LLT<Eigen::MatrixXd>& target);
+  // `columns[j]` holds variable j's n scores in sample order, a permutation of the table's
+  // scores. `target` factors the normal-score target R = P P^T. Computes T = S^T S /
+  // sum(score^2) = Q Q^T (the scores have mean zero) and the lower triangular mix M = P Q^-1.
+  ScoreReordering(std::vector<const double*> columns, const ScoreTable& table, const Eigen::LLT<Eigen::MatrixXd>& target);
 
   // False when the sample's score correlation T is singular: nothing can be imposed.
   bool valid() const { return valid_; }
@@ -45,7 +55,7 @@ class ScoreReordering {
   // Element (r, j) of S*: S_rj m_jj + S_r0 m_j0 + ... + S_r,j-1 m_j,j-1, summed in that order.
   double transformed_score(std::size_t j, std::size_t row) const;
 
-  std::span<const double> scores_;
+  std::vector<const double*> columns_;
   std::span<const std::uint32_t> sample_of_row_, row_of_sample_;  // empty: row = sample
   std::size_t n_;
   double largest_score_;

@@ -19,15 +19,15 @@ namespace detail {
 
 namespace {
 
-// Fisher-Yates from the last position down: swap position i with j = below(i + 1) (Lemire
-// 2019, 32-bit form, on the high then the low half of each 64-bit draw). For large n every
-// swap is a cache miss. The draws do not depend on the array, so they run one batch ahead of
-// the swaps: the partners of batch b + 1 are drawn and prefetched while batch b is swapped.
-// Draws and swaps each happen in the same order as in the plain loop.
-template <class T>
-void fisher_yates(std::span<T> array, Mt19937_64Block& random) {
+// The inside-out shuffle of latin_column.hpp, out[r] = source(shuffled_iota[r]). For large n
+// every step touches a random element of `out`: the draws do not depend on the array, so they
+// run one batch ahead of the moves, and the elements the next batch will touch are prefetched
+// while this batch moves. Draws and moves each happen in the same order as in the plain loop.
+template <class T, class Source>
+void inside_out_shuffle(const Source& source, std::span<T> out, Mt19937_64Block& random) {
   constexpr std::size_t batch = 64;
-  T* values = array.data();
+  const std::size_t n = out.size();
+  T* values = out.data();
   std::uint32_t partners[2][batch];
   std::uint64_t word_pair = 0;
   bool has_low = false;
@@ -40,10 +40,10 @@ void fisher_yates(std::span<T> array, Mt19937_64Block& random) {
     has_low = true;
     return static_cast<std::uint32_t>(word_pair >> 32);
   };
-  // Draws the partners of positions top, top - 1, ..., top - count + 1 into `partner`.
-  const auto draw = [&](std::size_t top, std::size_t count, std::uint32_t* partner) {
+  // Draws j for i = first, first + 1, ..., first + count - 1 into `partner`.
+  const auto draw = [&](std::size_t first, std::size_t count, std::uint32_t* partner) {
     for (std::size_t b = 0; b < count; ++b) {
-      const auto bound = static_cast<std::uint32_t>(top - b + 1);
+      const auto bound = static_cast<std::uint32_t>(first + b + 1);
       std::uint64_t product = std::uint64_t{next_word()} * bound;
       if (static_cast<std::uint32_t>(product) < bound) {
         const std::uint32_t threshold = (0u - bound) % bound;
@@ -53,16 +53,21 @@ void fisher_yates(std::span<T> array, Mt19937_64Block& random) {
       __builtin_prefetch(values + partner[b], 1);
     }
   };
-  std::size_t i = array.size() - 1;
-  std::size_t count = std::min(batch, i);
+  values[0] = source(0);
+  std::size_t i = 1;
+  std::size_t count = std::min(batch, n - i);
   int current = 0;
   draw(i, count, partners[current]);
-  while (i > 0) {
-    const std::size_t next_top = i - count;
-    const std::size_t next_count = std::min(batch, next_top);
-    draw(next_top, next_count, partners[1 - current]);
-    for (std::size_t b = 0; b < count; ++b) std::swap(values[i - b], values[partners[current][b]]);
-    i = next_top;
+  while (i < n) {
+    const std::size_t next_first = i + count;
+    const std::size_t next_count = std::min(batch, n - next_first);
+    draw(next_first, next_count, partners[1 - current]);
+    for (std::size_t b = 0; b < count; ++b) {
+      const std::uint32_t j = partners[current][b];
+      if (j != i + b) values[i + b] = values[j];
+      values[j] = source(i + b);
+    }
+    i = next_first;
     count = next_count;
     current = 1 - current;
   }
@@ -71,14 +76,13 @@ void fisher_yates(std::span<T> array, Mt19937_64Block& random) {
 }  // namespace
 
 GROWTHUQ_AVX2_CLONE
-void shuffle(std::span<std::uint32_t> values, Mt19937_64Block& random) { fisher_yates(values, random); }
+void shuffled_copy(std::span<const double> source, std::span<double> out, Mt19937_64Block& random) {
+  inside_out_shuffle([&](std::size_t i) { return source[i]; }, out, random);
+}
 
 GROWTHUQ_AVX2_CLONE
-void shuffle(std::span<double> values, Mt19937_64Block& random) { fisher_yates(values, random); }
-
-void shuffle_strata(std::span<std::uint32_t> stratum, Mt19937_64Block& random) {
-  std::iota(stratum.begin(), stratum.end(), std::uint32_t{0});
-  shuffle(stratum, random);
+void shuffle_strata(std::span<std::uint32_t> sample_of_stratum, Mt19937_64Block& random) {
+  inside_out_shuffle([](std::size_t i) { return static_cast<std::uint32_t>(i); }, sample_of_stratum, random);
 }
 
 GROWTHUQ_AVX2_CLONE

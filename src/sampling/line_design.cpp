@@ -117,18 +117,16 @@ bool correlated_columns(std::string_view line_name, const std::vector<DesignVari
   if (target.info() != Eigen::Success) {
     throw std::invalid_argument("latin_hypercube_design: target correlation is not positive definite");
   }
-  detail::LargeBuffer<double> scores(n * m);
-  const std::span<double> score(scores.data(), n);
-  detail::fill_van_der_waerden_scores(score);
-  double sum_of_squares = 0;
-  for (const double x : score) sum_of_squares += x * x;
+  const std::shared_ptr<const detail::ScoreTable> table = detail::van_der_waerden_table(n);
   // Each stream is kept where its shuffle left it: the stratum points come next.
   std::vector<std::unique_ptr<detail::Mt19937_64Block>> random(m);
+  detail::LargeBuffer<double> shuffled(n * (m - 1));
+  std::vector<const double*> columns{table->score.data()};
   for (std::size_t j = 1; j < m; ++j) {
-    const std::span<double> column(scores.data() + j * n, n);
-    std::copy(score.begin(), score.end(), column.begin());
+    const std::span<double> column(shuffled.data() + (j - 1) * n, n);
     random[j] = std::make_unique<detail::Mt19937_64Block>(stream_key(options.seed, line_name, variables[j].name));
-    detail::shuffle(column, *random[j]);
+    detail::shuffled_copy(table->score, column, *random[j]);
+    columns.push_back(column.data());
   }
 
   detail::LargeBuffer<std::uint32_t> sample_of_row(n);
@@ -137,8 +135,7 @@ bool correlated_columns(std::string_view line_name, const std::vector<DesignVari
   ColumnScatter scatter(n);
   write_column(variables[0], *random[0], options, sample_of_row.data(), scatter, design.ranks[0], design.values[0]);
 
-  detail::ScoreReordering reordering(std::span<const double>(scores.data(), n * m), n, m, sum_of_squares, score[n - 1],
-                                     target);
+  detail::ScoreReordering reordering(columns, *table, target);
   if (!reordering.valid()) return false;
   reordering.set_row_order(std::span<const std::uint32_t>(sample_of_row.data(), n), design.ranks[0]);
   detail::LargeBuffer<std::uint64_t> records(n), scratch(n);
