@@ -2,6 +2,8 @@
 // under mpirun, writing samples.csv, summary.csv and results.h5 into the output directory and
 // a readable summary on stdout. Every process validates the same campaign text (rank 0 reads
 // the file and broadcasts it); only rank 0 prints.
+#include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -65,7 +67,15 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
   settings.overwrite = options.force ? Overwrite::allow : Overwrite::refuse;
   settings.progress = pool.is_coordinator() ? choose_progress_mode(options.quiet) : ProgressMode::none;
   settings.command_line = command_line_of(arguments);
-  run_campaign_with_outputs(prepared, pool, settings, std::cout, std::cerr);
+  const CampaignOutcome outcome = run_campaign_with_outputs(prepared, pool, settings, std::cout, std::cerr);
+  if (std::getenv("GROWTHUQ_TIMINGS") != nullptr) {
+    // One line per process, for measuring how the work is shared (tools/bench-campaign-scaling).
+    const RunTimings& t = outcome.run.timings;
+    std::fprintf(stderr,
+                 "growthuq run: timings of process %d of %d [s]: design %.3f evaluation %.3f sharing %.3f statistics %.3f "
+                 "observer %.3f\n",
+                 pool.rank(), pool.size(), t.design, t.evaluation, t.sharing, t.statistics, t.observer);
+  }
   return 0;
 }
 

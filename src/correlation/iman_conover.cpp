@@ -12,6 +12,7 @@
 #include "growthuq/distributions/standard_normal.hpp"
 #include "sampling/avx2_clone.hpp"
 #include "sampling/large_buffer.hpp"
+#include "stats/cross_products.hpp"
 #include "stats/keyed_sort.hpp"
 
 namespace growthuq {
@@ -77,51 +78,12 @@ std::shared_ptr<const ScoreTable> van_der_waerden_table(std::size_t n) {
   return table;
 }
 
-namespace {
-
-// T_ab = sum_i S_ia S_ib for a <= b, a block of rows at a time (the block's columns stay in
-// cache while all pairs use them), each sum in 4 lanes added in a fixed order.
-GROWTHUQ_AVX2_CLONE
-Eigen::MatrixXd score_products(const std::vector<const double*>& columns, std::size_t n) {
-  const std::size_t m = columns.size();
-  constexpr std::size_t lanes = 4;
-  constexpr std::size_t block = 2048;
-  std::vector<double> sums(m * m * lanes, 0.0);
-  for (std::size_t first = 0; first < n; first += block) {
-    const std::size_t count = std::min(block, n - first);
-    for (std::size_t a = 0; a < m; ++a) {
-      for (std::size_t b = a; b < m; ++b) {
-        const double* x = columns[a] + first;
-        const double* y = columns[b] + first;
-        double* sum = sums.data() + (a * m + b) * lanes;
-        double lane[lanes] = {sum[0], sum[1], sum[2], sum[3]};
-        std::size_t i = 0;
-        for (; i + lanes <= count; i += lanes) {
-          for (std::size_t l = 0; l < lanes; ++l) lane[l] += x[i + l] * y[i + l];
-        }
-        for (; i < count; ++i) lane[0] += x[i] * y[i];
-        for (std::size_t l = 0; l < lanes; ++l) sum[l] = lane[l];
-      }
-    }
-  }
-  Eigen::MatrixXd products(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(m));
-  for (std::size_t a = 0; a < m; ++a) {
-    for (std::size_t b = a; b < m; ++b) {
-      const double* sum = sums.data() + (a * m + b) * lanes;
-      products(static_cast<Eigen::Index>(b), static_cast<Eigen::Index>(a)) = (sum[0] + sum[1]) + (sum[2] + sum[3]);
-    }
-  }
-  return products;
-}
-
-}  // namespace
-
 ScoreReordering::ScoreReordering(std::vector<const double*> columns, const ScoreTable& table,
                                  const Eigen::LLT<Eigen::MatrixXd>& target)
     : columns_(std::move(columns)), n_(table.score.size()), largest_score_(table.score.empty() ? 0.0 : table.score.back()) {
   const auto m = static_cast<Eigen::Index>(columns_.size());
   Eigen::MatrixXd sample_correlation(m, m);
-  sample_correlation.triangularView<Eigen::Lower>() = score_products(columns_, n_) / table.sum_of_squares;
+  sample_correlation = cross_products(columns_, n_) / table.sum_of_squares;
   const Eigen::LLT<Eigen::MatrixXd> sample(sample_correlation);
   if (sample.info() != Eigen::Success) return;
   // M = P Q^-1, from M Q = P  <=>  Q^T M^T = P^T (a triangular solve).

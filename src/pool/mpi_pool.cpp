@@ -1,6 +1,6 @@
 // The MPI pool: the only file of the engine that includes mpi.h.
 //
-// Protocol (dynamic master/worker where the master also works): rank 0 keeps up to two
+// Protocol (dynamic master/worker where the master also works): rank 0 keeps up to three
 // chunks assigned to every other rank, so a worker never idles waiting for the next one, and
 // computes chunks itself between serving messages. A worker answers each ASSIGN with a RESULT
 // (chunk index + values) or a FAILURE (chunk index + reason). When everything is sunk, or after
@@ -9,17 +9,24 @@
 // outcome and every rank returns or throws the same PoolError.
 #include <mpi.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <deque>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "growthuq/pool/pool.hpp"
 
 namespace growthuq {
 namespace {
 
-enum Tag : int { assign_tag = 1, result_tag = 2, failure_tag = 3, stop_tag = 4, done_tag = 5 };
+// Chunks kept assigned to each worker: enough that a worker still has work while rank 0 is busy
+// with a chunk of its own.
+constexpr int queued_per_worker = 3;
+
+enum Tag : int { assign_tag = 1, result_tag = 2, failure_tag = 3, stop_tag = 4, done_tag = 5, gather_tag = 6 };
 
 void finalize_mpi() {
   int finalized = 0;
@@ -38,6 +45,9 @@ class MpiPool final : public Pool {
     int initialized = 0;
     MPI_Initialized(&initialized);
     if (!initialized) {
+      // A process waiting for messages gives its core to other threads (rank 0's file writer,
+      // other work on a shared machine) instead of spinning on it; the user's own setting wins.
+      setenv("OMPI_MCA_mpi_yield_when_idle", "1", 0);
       MPI_Init(nullptr, nullptr);
       std::atexit(finalize_mpi);
     }
@@ -68,6 +78,41 @@ class MpiPool final : public Pool {
     return received;
   }
 
+  std::vector<std::vector<double>> gather(std::vector<double> values) override {
+    // Sizes first, then the numbers in pieces (MPI counts are ints), rank by rank.
+    constexpr std::size_t piece = std::size_t{1} << 27;  // doubles: 1 GiB
+    std::vector<std::vector<double>> all;
+    if (rank_ != 0) {
+      std::uint64_t size = values.size();
+      MPI_Send(&size, 1, MPI_UINT64_T, 0, gather_tag, MPI_COMM_WORLD);
+      for (std::size_t done = 0; done < values.size(); done += piece) {
+        MPI_Send(values.data() + done, static_cast<int>(std::min(piece, values.size() - done)), MPI_DOUBLE, 0, gather_tag,
+                 MPI_COMM_WORLD);
+      }
+      return all;
+    }
+    all.push_back(std::move(values));
+    for (int source = 1; source < size_; ++source) {
+      std::uint64_t size = 0;
+      MPI_Recv(&size, 1, MPI_UINT64_T, source, gather_tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      std::vector<double>& received = all.emplace_back(size);
+      for (std::size_t done = 0; done < received.size(); done += piece) {
+        MPI_Recv(received.data() + done, static_cast<int>(std::min(piece, received.size() - done)), MPI_DOUBLE, source,
+                 gather_tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      }
+    }
+    return all;
+  }
+
+  void broadcast_bytes(std::span<std::byte> data, int root) override {
+    // MPI counts are ints: pieces of at most 1 GiB.
+    constexpr std::size_t piece = std::size_t{1} << 30;
+    for (std::size_t done = 0; done < data.size(); done += piece) {
+      const std::size_t size = std::min(piece, data.size() - done);
+      MPI_Bcast(data.data() + done, static_cast<int>(size), MPI_BYTE, root, MPI_COMM_WORLD);
+    }
+  }
+
  private:
   // Rank 0: hands out chunks, computes chunks itself, sinks results. Returns the failure text.
   std::string coordinate(const std::vector<ChunkRange>& all, const std::vector<std::uint64_t>& todo,
@@ -80,7 +125,7 @@ class MpiPool final : public Pool {
       MPI_Send(&todo[next], 1, MPI_UINT64_T, worker, assign_tag, MPI_COMM_WORLD);
       ++next;
     };
-    for (int round = 0; round < 2; ++round) {
+    for (int round = 0; round < queued_per_worker; ++round) {
       for (int worker = 1; worker < size_; ++worker) assign_next(worker);
     }
 
@@ -141,11 +186,32 @@ class MpiPool final : public Pool {
   }
 
   // Ranks > 0: compute assigned chunks until STOP. Returns "" (rank 0 reports failures).
+  // Results go out without waiting (MPI_Isend): a large message is only copied when rank 0
+  // receives it, between chunks of its own, and the next queued chunk is computed meanwhile.
   std::string serve(const std::vector<ChunkRange>& all, const ChunkWork& work) {
+    struct Sending {
+      MPI_Request request;
+      std::vector<double> message;
+    };
+    std::deque<Sending> sending;  // a deque never moves its elements: buffers stay put
+    const auto complete_sent = [&](bool wait) {
+      while (!sending.empty()) {
+        int done = 0;
+        if (wait) {
+          MPI_Wait(&sending.front().request, MPI_STATUS_IGNORE);
+          done = 1;
+        } else {
+          MPI_Test(&sending.front().request, &done, MPI_STATUS_IGNORE);
+        }
+        if (!done) return;
+        sending.pop_front();
+      }
+    };
     for (;;) {
       MPI_Status status;
       MPI_Probe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
       if (status.MPI_TAG == stop_tag) {
+        complete_sent(true);
         MPI_Recv(nullptr, 0, MPI_CHAR, 0, stop_tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
         MPI_Send(nullptr, 0, MPI_CHAR, 0, done_tag, MPI_COMM_WORLD);
         return {};
@@ -156,7 +222,11 @@ class MpiPool final : public Pool {
       try {
         std::vector<double> message = work(range);
         message.insert(message.begin(), static_cast<double>(index));
-        MPI_Send(message.data(), static_cast<int>(message.size()), MPI_DOUBLE, 0, result_tag, MPI_COMM_WORLD);
+        Sending& out = sending.emplace_back();
+        out.message = std::move(message);
+        MPI_Isend(out.message.data(), static_cast<int>(out.message.size()), MPI_DOUBLE, 0, result_tag, MPI_COMM_WORLD,
+                  &out.request);
+        complete_sent(false);
       } catch (const std::exception& error) {
         const std::string text = describe_failure(rank_, range, error.what());
         MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, 0, failure_tag, MPI_COMM_WORLD);

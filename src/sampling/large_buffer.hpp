@@ -1,6 +1,6 @@
 // Uninitialized scratch buffers of millions of elements for the sampling core and the analyses,
 // from the pool of large blocks of growthuq/core/large_vector.hpp (reused from one piece of work
-// to the next, on 2 MiB pages where the kernel allows).
+// to the next).
 #pragma once
 
 #include <cstddef>

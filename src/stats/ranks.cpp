@@ -12,14 +12,6 @@ namespace growthuq {
 
 namespace {
 
-// Unsigned key whose order is the order of the doubles (sign bit flipped for positives, all
-// bits flipped for negatives); +0.0 and -0.0 map to the same key so they tie. Its top 32 bits
-// (sign, exponent, 20 mantissa bits) are a monotone 32-bit key.
-std::uint32_t order_key32(double value) {
-  const auto bits = std::bit_cast<std::uint64_t>(value + 0.0);
-  return static_cast<std::uint32_t>(((bits >> 63) != 0 ? ~bits : bits | (std::uint64_t{1} << 63)) >> 32);
-}
-
 constexpr std::size_t radix_threshold = 1024;  // below this std::stable_sort is as fast
 
 // Stable argsort in linear time: records (key32 << 32 | index) sorted by detail::sort_records,
@@ -29,7 +21,7 @@ std::vector<std::uint32_t> radix_argsort(std::span<const double> values) {
   const std::size_t n = values.size();
   // Uninitialized: every element is written before it is read.
   std::unique_ptr<std::uint64_t[]> records(new std::uint64_t[n]), scratch(new std::uint64_t[n]);
-  for (std::size_t i = 0; i < n; ++i) records[i] = detail::keyed_record(order_key32(values[i]), static_cast<std::uint32_t>(i));
+  for (std::size_t i = 0; i < n; ++i) records[i] = detail::keyed_record(detail::order_key32(values[i]), static_cast<std::uint32_t>(i));
   const std::span<std::uint64_t> sorted(records.get(), n);
   detail::sort_records(sorted, std::span<std::uint64_t>(scratch.get(), n), 32);
   detail::order_equal_keys(sorted, [&](std::uint32_t i) { return values[i]; });
