@@ -172,9 +172,9 @@ LineDesign PreparedCampaign::design(const PreparedLine& line, Pool& pool) const 
   // cost the same.
   std::vector<double> costs(columns, 1.0);
   if (design.correlation.imposed && columns > 1) costs[0] = 0.35;
-  // The coordinator still has the previous line to put together meanwhile (result and
-  // statistics: about two columns' work, measured).
-  const std::vector<int> owner = share_out(costs, pool.size(), 2.0);
+  // The coordinator still has the previous line to put together meanwhile (about two columns'
+  // work, measured) and its writer thread to share a core with (about one more).
+  const std::vector<int> owner = share_out(costs, pool.size(), 3.0);
   for (std::size_t j = 0; j < columns; ++j) {
     if (owner[j] != pool.rank()) continue;
     design.strictly_increasing[j] = designer->compute_column(j, design.ranks[j], design.values[j]) ? 1 : 0;
@@ -295,14 +295,13 @@ void apply_kappa(std::span<double> v, std::span<SampleStatus> status, double kap
   }
 }
 
-// The coordinator's LineResult: the design's inputs and the evaluated outputs, copied.
-LineResult assemble_result(const PreparedCampaign& campaign, const PreparedLine& line, const LineDesign& design,
-                           const LineOutputs& outputs) {
+// The coordinator's LineResult: the design's inputs and the evaluated outputs, moved in.
+LineResult assemble_result(const PreparedCampaign& campaign, const PreparedLine& line, LineDesign& design,
+                           LineOutputs& outputs) {
   LineResult result = result_layout(campaign, line);
   const std::size_t inputs = design.values.size();
   for (std::size_t c = 0; c < result.columns.size(); ++c) {
-    const LargeVector<double>& values = c < inputs ? design.values[c] : outputs.columns[c - inputs];
-    result.columns[c].values.assign(values.begin(), values.end());
+    result.columns[c].values = std::move(c < inputs ? design.values[c] : outputs.columns[c - inputs]);
   }
   result.status.assign(outputs.status.begin(), outputs.status.end());
   result.correlated_inputs = design.names;
@@ -421,7 +420,7 @@ RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunO
   for (const PreparedLine& line : campaign.lines()) {
     observer_failure.run(pool, [&] { observer.line_started(line, n); });
     auto start = Clock::now();
-    const LineDesign design = campaign.design(line, pool);
+    LineDesign design = campaign.design(line, pool);
     observer_failure.share(pool);
     outcome.timings.design += seconds_since(start);
 
@@ -482,10 +481,11 @@ RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunO
     start = Clock::now();
     const std::vector<std::uint32_t> used = analysis_samples(evaluated.status);
     const std::size_t columns = layout.columns.size();
-    // An input ranked by its strata costs about a quarter of a sorted column (measured).
+    // An input ranked by its strata costs about a quarter of a sorted column (measured); the
+    // coordinator shares its core with its writer thread (about a column's work).
     std::vector<double> costs(columns, 1.0);
     for (std::size_t c = 0; c < design.ranks.size(); ++c) costs[c] = design.strictly_increasing[c] != 0 ? 0.25 : 1.0;
-    const std::vector<int> owner = share_out(costs, pool.size(), 0.0);
+    const std::vector<int> owner = share_out(costs, pool.size(), 1.0);
     std::vector<ColumnStatistics> statistics(columns);
     std::vector<double> mine;  // [column, size, message] for each column this process computes
     for (std::size_t c = 0; c < columns; ++c) {

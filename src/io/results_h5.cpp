@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <numeric>
+#include <span>
 #include <stdexcept>
 #include <string_view>
 #include <utility>
@@ -56,7 +57,7 @@ void write_f64_attribute(H5::H5Object& object, const std::string& name, double v
 
 template <typename T>
 H5::DataSet write_vector(H5::Group& group, const std::string& name, const H5::PredType& file_type,
-                         const H5::PredType& memory_type, const std::vector<T>& values) {
+                         const H5::PredType& memory_type, std::span<const T> values) {
   const hsize_t size = values.size();
   H5::DataSet dataset = group.createDataSet(name, file_type, H5::DataSpace(1, &size));
   if (!values.empty()) dataset.write(values.data(), memory_type);
@@ -177,17 +178,18 @@ void ResultsH5Writer::write_line(const LineResult& result, const std::vector<Qua
     write_u64_attribute(group, "samples", samples);
     for (const ResultColumn& column : result.columns) {
       H5::DataSet dataset = write_vector(group, column.column_name(), H5::PredType::IEEE_F64LE,
-                                         H5::PredType::NATIVE_DOUBLE, column.values);
+                                         H5::PredType::NATIVE_DOUBLE, std::span<const double>(column.values));
       write_string_attribute(dataset, "quantity", column.quantity);
       write_string_attribute(dataset, "unit", std::string(column.unit->symbol));
       write_string_attribute(dataset, "role", column.is_input ? "input" : "output");
     }
     std::vector<std::uint64_t> index(samples);
     std::iota(index.begin(), index.end(), std::uint64_t{0});
-    write_vector(group, "sample", H5::PredType::STD_U64LE, H5::PredType::NATIVE_UINT64, index);
+    write_vector(group, "sample", H5::PredType::STD_U64LE, H5::PredType::NATIVE_UINT64, std::span<const std::uint64_t>(index));
     std::vector<std::uint8_t> codes(samples);
     for (std::size_t i = 0; i < samples; ++i) codes[i] = static_cast<std::uint8_t>(result.status[i]);
-    H5::DataSet status = write_vector(group, "status", H5::PredType::STD_U8LE, H5::PredType::NATIVE_UINT8, codes);
+    H5::DataSet status =
+        write_vector(group, "status", H5::PredType::STD_U8LE, H5::PredType::NATIVE_UINT8, std::span<const std::uint8_t>(codes));
     write_strings_attribute(status, "names", status_names());
 
     write_summary(group, "summary", summaries);
