@@ -12,7 +12,7 @@ namespace {
 
 constexpr std::size_t smallest_kept = std::size_t{1} << 20;
 constexpr std::size_t most_blocks_kept = 64;
-constexpr std::size_t most_bytes_kept = std::size_t{1} << 30;
+constexpr std::size_t most_bytes_kept = std::size_t{1} << 29;
 
 struct KeptBlock {
   void* memory;

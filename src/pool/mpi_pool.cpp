@@ -10,10 +10,12 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstdlib>
 #include <deque>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -27,6 +29,35 @@ namespace {
 constexpr int queued_per_worker = 3;
 
 enum Tag : int { assign_tag = 1, result_tag = 2, failure_tag = 3, stop_tag = 4, done_tag = 5, gather_tag = 6 };
+
+// Waiting without spinning a core: MPI's own blocking calls poll flat out, which on a machine
+// with as many processes as cores takes the core from anything else that could run there (the
+// coordinator's writer thread, other programs). These poll, then sleep a little longer each time
+// (10 us doubling to 200 us: a message then waits at most that much more than it would).
+void pause_between_polls(long& microseconds) {
+  std::this_thread::sleep_for(std::chrono::microseconds(microseconds));
+  microseconds = std::min(2 * microseconds, 200L);
+}
+
+void wait_gently(MPI_Request& request) {
+  int done = 0;
+  MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+  for (long pause = 10; !done; MPI_Test(&request, &done, MPI_STATUS_IGNORE)) pause_between_polls(pause);
+}
+
+void probe_gently(int source, MPI_Status& status) {
+  int pending = 0;
+  MPI_Iprobe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &pending, &status);
+  for (long pause = 10; !pending; MPI_Iprobe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &pending, &status)) {
+    pause_between_polls(pause);
+  }
+}
+
+void broadcast_gently(void* data, int count, MPI_Datatype type, int root) {
+  MPI_Request request;
+  MPI_Ibcast(data, count, type, root, MPI_COMM_WORLD, &request);
+  wait_gently(request);
+}
 
 void finalize_mpi() {
   int finalized = 0;
@@ -45,9 +76,6 @@ class MpiPool final : public Pool {
     int initialized = 0;
     MPI_Initialized(&initialized);
     if (!initialized) {
-      // A process waiting for messages gives its core to other threads (rank 0's file writer,
-      // other work on a shared machine) instead of spinning on it; the user's own setting wins.
-      setenv("OMPI_MCA_mpi_yield_when_idle", "1", 0);
       MPI_Init(nullptr, nullptr);
       std::atexit(finalize_mpi);
     }
@@ -72,9 +100,9 @@ class MpiPool final : public Pool {
 
   std::string broadcast(const std::string& text) override {
     std::uint64_t length = text.size();
-    MPI_Bcast(&length, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+    broadcast_gently(&length, 1, MPI_UINT64_T, 0);
     std::string received = rank_ == 0 ? text : std::string(length, '\0');
-    MPI_Bcast(received.data(), static_cast<int>(length), MPI_CHAR, 0, MPI_COMM_WORLD);
+    broadcast_gently(received.data(), static_cast<int>(length), MPI_CHAR, 0);
     return received;
   }
 
@@ -82,23 +110,28 @@ class MpiPool final : public Pool {
     // Sizes first, then the numbers in pieces (MPI counts are ints), rank by rank.
     constexpr std::size_t piece = std::size_t{1} << 27;  // doubles: 1 GiB
     std::vector<std::vector<double>> all;
+    MPI_Request request;
     if (rank_ != 0) {
       std::uint64_t size = values.size();
-      MPI_Send(&size, 1, MPI_UINT64_T, 0, gather_tag, MPI_COMM_WORLD);
+      MPI_Isend(&size, 1, MPI_UINT64_T, 0, gather_tag, MPI_COMM_WORLD, &request);
+      wait_gently(request);
       for (std::size_t done = 0; done < values.size(); done += piece) {
-        MPI_Send(values.data() + done, static_cast<int>(std::min(piece, values.size() - done)), MPI_DOUBLE, 0, gather_tag,
-                 MPI_COMM_WORLD);
+        MPI_Isend(values.data() + done, static_cast<int>(std::min(piece, values.size() - done)), MPI_DOUBLE, 0, gather_tag,
+                  MPI_COMM_WORLD, &request);
+        wait_gently(request);
       }
       return all;
     }
     all.push_back(std::move(values));
     for (int source = 1; source < size_; ++source) {
       std::uint64_t size = 0;
-      MPI_Recv(&size, 1, MPI_UINT64_T, source, gather_tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      MPI_Irecv(&size, 1, MPI_UINT64_T, source, gather_tag, MPI_COMM_WORLD, &request);
+      wait_gently(request);
       std::vector<double>& received = all.emplace_back(size);
       for (std::size_t done = 0; done < received.size(); done += piece) {
-        MPI_Recv(received.data() + done, static_cast<int>(std::min(piece, received.size() - done)), MPI_DOUBLE, source,
-                 gather_tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        MPI_Irecv(received.data() + done, static_cast<int>(std::min(piece, received.size() - done)), MPI_DOUBLE, source,
+                  gather_tag, MPI_COMM_WORLD, &request);
+        wait_gently(request);
       }
     }
     return all;
@@ -109,7 +142,7 @@ class MpiPool final : public Pool {
     constexpr std::size_t piece = std::size_t{1} << 30;
     for (std::size_t done = 0; done < data.size(); done += piece) {
       const std::size_t size = std::min(piece, data.size() - done);
-      MPI_Bcast(data.data() + done, static_cast<int>(size), MPI_BYTE, root, MPI_COMM_WORLD);
+      broadcast_gently(data.data() + done, static_cast<int>(size), MPI_BYTE, root);
     }
   }
 
@@ -165,7 +198,7 @@ class MpiPool final : public Pool {
         }
         ++sunk;
       } else {
-        MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+        probe_gently(MPI_ANY_SOURCE, status);
         handle_message(status);
       }
     }
@@ -174,7 +207,7 @@ class MpiPool final : public Pool {
     for (int worker = 1; worker < size_; ++worker) MPI_Send(nullptr, 0, MPI_CHAR, worker, stop_tag, MPI_COMM_WORLD);
     for (int done = 0; done < size_ - 1;) {
       MPI_Status status;
-      MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+      probe_gently(MPI_ANY_SOURCE, status);
       if (status.MPI_TAG == done_tag) {
         MPI_Recv(nullptr, 0, MPI_CHAR, status.MPI_SOURCE, done_tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
         ++done;
@@ -209,7 +242,7 @@ class MpiPool final : public Pool {
     };
     for (;;) {
       MPI_Status status;
-      MPI_Probe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+      probe_gently(0, status);
       if (status.MPI_TAG == stop_tag) {
         complete_sent(true);
         MPI_Recv(nullptr, 0, MPI_CHAR, 0, stop_tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
