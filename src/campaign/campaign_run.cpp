@@ -164,17 +164,20 @@ LineDesign PreparedCampaign::design(const PreparedLine& line, Pool& pool) const 
   options.samples = campaign_.samples;
   options.seed = campaign_.seed;
   options.position = campaign_.stratum_position;
-  const std::unique_ptr<LineDesigner> designer =
-      line_designer(line.design_variables, options, line.correlation ? &*line.correlation : nullptr);
-  LineDesign design = designer->outline();
-  const std::size_t columns = designer->columns();
   // With Iman-Conover, column 0 costs about a third of another (no sort); independent columns
-  // cost the same.
+  // cost the same. The coordinator still has the previous line to put together meanwhile
+  // (about two columns' work, measured) and its writer thread to share a core with (about one
+  // more). Whoever computes a column also shuffles its scores, and sends them to the others.
+  const std::size_t columns = line.design_variables.variables.size();
   std::vector<double> costs(columns, 1.0);
-  if (design.correlation.imposed && columns > 1) costs[0] = 0.35;
-  // The coordinator still has the previous line to put together meanwhile (about two columns'
-  // work, measured) and its writer thread to share a core with (about one more).
+  if (line.correlation && columns > 1) costs[0] = 0.35;
   const std::vector<int> owner = share_out(costs, pool.size(), 3.0);
+  LineDesigner::SharedPreparation shared;
+  for (std::size_t j = 0; j < columns; ++j) shared.shuffles_here.push_back(owner[j] == pool.rank() ? 1 : 0);
+  shared.share = [&](std::size_t j, std::span<double> scores) { pool.broadcast_bytes(std::as_writable_bytes(scores), owner[j]); };
+  const std::unique_ptr<LineDesigner> designer =
+      line_designer(line.design_variables, options, line.correlation ? &*line.correlation : nullptr, &shared);
+  LineDesign design = designer->outline();
   for (std::size_t j = 0; j < columns; ++j) {
     if (owner[j] != pool.rank()) continue;
     design.strictly_increasing[j] = designer->compute_column(j, design.ranks[j], design.values[j]) ? 1 : 0;

@@ -19,7 +19,7 @@ namespace detail {
 
 // Memory of at least `bytes`, from the pool when it holds a block of about that size (no more
 // than a quarter larger), else from malloc. Blocks of 1 MiB or more that are released are kept,
-// up to 64 blocks and 1 GiB in all (the oldest go first): about what one 1e6-sample line of a
+// up to 64 blocks and 512 MiB in all (the oldest go first): about what one 1e6-sample line of a
 // campaign uses at a time. (No transparent huge pages: on the 2-core test machine, their
 // compaction on first touch made a campaign's designs 20-40 % slower, and the random accesses
 // they would speed up measured no faster.) Thread-safe.

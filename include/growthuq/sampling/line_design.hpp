@@ -5,7 +5,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <span>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -59,8 +61,19 @@ LineDesign latin_hypercube_design(std::string_view line_name, const std::vector<
 // compute_column(j) gives column j from that alone, on any process, in any order.
 class LineDesigner {
  public:
+  // Processes may share the preparation too: the shuffled score columns of a correlated design
+  // are its largest part. shuffles_here[j] (one per variable; entry 0 is not used) says whether
+  // this process shuffles variable j's scores; share(j, scores) is called for every j >= 1 in
+  // order, on every process, and must leave in `scores` that column as the process that
+  // shuffled it has it (a broadcast from it). A process can then compute only the columns it
+  // shuffled itself (the rest of their streams are its own), and column 0.
+  struct SharedPreparation {
+    std::vector<std::uint8_t> shuffles_here;
+    std::function<void(std::size_t j, std::span<double> scores)> share;
+  };
+
   LineDesigner(std::string_view line_name, std::vector<DesignVariable> variables, const SamplingOptions& options,
-               const ImanConoverTarget* target);
+               const ImanConoverTarget* target, const SharedPreparation* shared = nullptr);
   LineDesigner(const LineDesigner&) = delete;
   LineDesigner& operator=(const LineDesigner&) = delete;
   ~LineDesigner();
@@ -88,6 +101,7 @@ LineDesign sample_line(const LineDistributions& line, const SamplingOptions& opt
 
 // The designer of that design (LineDesigner above), to compute it column by column.
 std::unique_ptr<LineDesigner> line_designer(const LineDistributions& line, const SamplingOptions& options,
-                                            const RankCorrelationFile* correlation);
+                                            const RankCorrelationFile* correlation,
+                                            const LineDesigner::SharedPreparation* shared = nullptr);
 
 }  // namespace growthuq
