@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 #include "growthuq/core/error.hpp"
@@ -159,24 +160,25 @@ LineDesign PreparedCampaign::design(const PreparedLine& line) const {
   return sample_line(line.design_variables, options, line.correlation ? &*line.correlation : nullptr);
 }
 
-LineDesign PreparedCampaign::design(const PreparedLine& line, Pool& pool) const {
+LineDesign PreparedCampaign::design(const PreparedLine& line, Pool& pool, const std::function<void()>& meanwhile) const {
   SamplingOptions options;
   options.samples = campaign_.samples;
   options.seed = campaign_.seed;
   options.position = campaign_.stratum_position;
   // With Iman-Conover, column 0 costs about a third of another (no sort); independent columns
-  // cost the same. The coordinator still has the previous line to put together meanwhile
-  // (about two columns' work, measured) and its writer thread to share a core with (about one
-  // more). Whoever computes a column also shuffles its scores, and sends them to the others.
+  // cost the same. The coordinator has `meanwhile` to do too (about a column and a half's work
+  // for finishing a line, measured). Whoever computes a column also shuffles its scores, and
+  // sends them to the others.
   const std::size_t columns = line.design_variables.variables.size();
   std::vector<double> costs(columns, 1.0);
   if (line.correlation && columns > 1) costs[0] = 0.35;
-  const std::vector<int> owner = share_out(costs, pool.size(), 3.0);
+  const std::vector<int> owner = share_out(costs, pool.size(), 1.5);
   LineDesigner::SharedPreparation shared;
   for (std::size_t j = 0; j < columns; ++j) shared.shuffles_here.push_back(owner[j] == pool.rank() ? 1 : 0);
   shared.share = [&](std::size_t j, std::span<double> scores) { pool.broadcast_bytes(std::as_writable_bytes(scores), owner[j]); };
   const std::unique_ptr<LineDesigner> designer =
       line_designer(line.design_variables, options, line.correlation ? &*line.correlation : nullptr, &shared);
+  if (meanwhile) meanwhile();
   LineDesign design = designer->outline();
   for (std::size_t j = 0; j < columns; ++j) {
     if (owner[j] != pool.rank()) continue;
@@ -418,36 +420,51 @@ RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunO
   RunOutcome outcome;
   const std::size_t n = campaign.campaign().samples;
   const std::size_t outputs = campaign.computed_outputs().size();
-  // A failure of the observer (writing) reaches the other processes after the next design.
+  // The coordinator finishes each line (gathers its statistics, assembles it, hands it to the
+  // observer) during the next line's design, after the part every process must do before the
+  // columns; the other processes need nothing from that. A failure of the observer (writing)
+  // reaches them after the next design.
   CoordinatorFailure observer_failure;
+  std::function<void()> finish_line;
+  const auto finish_previous_line = [&] {
+    if (!finish_line) return;
+    const auto start = Clock::now();
+    observer_failure.run(pool, finish_line);
+    finish_line = nullptr;
+    outcome.timings.observer += seconds_since(start);
+  };
   for (const PreparedLine& line : campaign.lines()) {
-    observer_failure.run(pool, [&] { observer.line_started(line, n); });
     auto start = Clock::now();
-    LineDesign design = campaign.design(line, pool);
+    // The observer sees each line finished before the next one starts.
+    const auto meanwhile = [&] {
+      finish_previous_line();
+      observer_failure.run(pool, [&] { observer.line_started(line, n); });
+    };
+    auto design = std::make_shared<LineDesign>(campaign.design(line, pool, meanwhile));
     observer_failure.share(pool);
     outcome.timings.design += seconds_since(start);
 
     // The models, in chunks; the coordinator collects the outputs.
     start = Clock::now();
     const LineResult layout = result_layout(campaign, line);
-    LineOutputs evaluated;
-    evaluated.columns.resize(outputs);
+    auto evaluated = std::make_shared<LineOutputs>();
+    evaluated->columns.resize(outputs);
     std::vector<double> to_si;
-    for (std::size_t o = 0; o < outputs; ++o) to_si.push_back(layout.columns[design.values.size() + o].unit->to_si);
+    for (std::size_t o = 0; o < outputs; ++o) to_si.push_back(layout.columns[design->values.size() + o].unit->to_si);
     if (pool.is_coordinator()) {
-      for (LargeVector<double>& column : evaluated.columns) column.resize(n);  // every chunk writes its range
-      evaluated.status.resize(n);
+      for (LargeVector<double>& column : evaluated->columns) column.resize(n);  // every chunk writes its range
+      evaluated->status.resize(n);
     }
-    const ChunkWork work = [&](ChunkRange range) { return campaign.evaluate_chunk(line, design, range); };
+    const ChunkWork work = [&](ChunkRange range) { return campaign.evaluate_chunk(line, *design, range); };
     const ChunkSink sink = [&](ChunkRange range, std::span<const double> values) {
       const std::size_t size = range.end - range.begin;
       if (values.size() != (outputs + 1) * size) throw std::logic_error("chunk of unexpected size");
       for (std::size_t o = 0; o < outputs; ++o) {
-        double* out = evaluated.columns[o].data() + range.begin;
+        double* out = evaluated->columns[o].data() + range.begin;
         for (std::size_t i = 0; i < size; ++i) out[i] = values[o * size + i] / to_si[o];
       }
       for (std::size_t i = 0; i < size; ++i) {
-        evaluated.status[range.begin + i] = static_cast<SampleStatus>(static_cast<int>(values[outputs * size + i]));
+        evaluated->status[range.begin + i] = static_cast<SampleStatus>(static_cast<int>(values[outputs * size + i]));
       }
       observer.chunk_done(range);
     };
@@ -456,88 +473,91 @@ RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunO
     const bool is_reference = campaign.calibrates_kappa() && line.campaign_line.name == campaign.campaign().reference_line;
     if (is_reference) {
       on_coordinator(pool, [&] {
-        const LargeVector<double>& v_values = evaluated.columns[static_cast<std::size_t>(v - campaign.computed_outputs().begin())];
+        const LargeVector<double>& v_values = evaluated->columns[static_cast<std::size_t>(v - campaign.computed_outputs().begin())];
         const double v_to_si = to_si[static_cast<std::size_t>(v - campaign.computed_outputs().begin())];
         std::vector<double> v_si(v_values.begin(), v_values.end());
         for (double& value : v_si) value *= v_to_si;
         outcome.kappa = calibrate_kappa(line.campaign_line.name, campaign.experimental_median_growth_rate(),
-                                        median_growth_rate(v_si, evaluated.status));
+                                        median_growth_rate(v_si, evaluated->status));
       });
       outcome.calibrated = true;
     }
     if (pool.is_coordinator() && campaign.calibrates_kappa() && v != campaign.computed_outputs().end()) {
-      apply_kappa(evaluated.columns[static_cast<std::size_t>(v - campaign.computed_outputs().begin())], evaluated.status,
+      apply_kappa(evaluated->columns[static_cast<std::size_t>(v - campaign.computed_outputs().begin())], evaluated->status,
                   outcome.kappa);
     }
     outcome.timings.evaluation += seconds_since(start);
 
     // Every process gets the outputs and statuses, to share the statistics out by column.
     start = Clock::now();
-    pool.broadcast_vector(evaluated.status, n, 0);
-    for (LargeVector<double>& column : evaluated.columns) pool.broadcast_vector(column, n, 0);
-    std::vector<std::span<const double>> values(design.values.begin(), design.values.end());
-    values.insert(values.end(), evaluated.columns.begin(), evaluated.columns.end());
+    pool.broadcast_vector(evaluated->status, n, 0);
+    for (LargeVector<double>& column : evaluated->columns) pool.broadcast_vector(column, n, 0);
+    std::vector<std::span<const double>> values(design->values.begin(), design->values.end());
+    values.insert(values.end(), evaluated->columns.begin(), evaluated->columns.end());
     outcome.timings.sharing += seconds_since(start);
 
     // The statistics, column by column, shared out in advance; then the coordinator assembles
     // the line's result and puts the statistics together.
     start = Clock::now();
-    const std::vector<std::uint32_t> used = analysis_samples(evaluated.status);
+    auto used = std::make_shared<const std::vector<std::uint32_t>>(analysis_samples(evaluated->status));
     const std::size_t columns = layout.columns.size();
     // An input ranked by its strata costs about a quarter of a sorted column (measured); the
-    // coordinator shares its core with its writer thread (about a column's work).
+    // coordinator shares its core with its writer thread (about half a column's work).
     std::vector<double> costs(columns, 1.0);
-    for (std::size_t c = 0; c < design.ranks.size(); ++c) costs[c] = design.strictly_increasing[c] != 0 ? 0.25 : 1.0;
-    const std::vector<int> owner = share_out(costs, pool.size(), 1.0);
-    std::vector<ColumnStatistics> statistics(columns);
+    for (std::size_t c = 0; c < design->ranks.size(); ++c) costs[c] = design->strictly_increasing[c] != 0 ? 0.25 : 1.0;
+    const std::vector<int> owner = share_out(costs, pool.size(), 0.5);
+    auto statistics = std::make_shared<std::vector<ColumnStatistics>>(columns);
     std::vector<double> mine;  // [column, size, message] for each column this process computes
     for (std::size_t c = 0; c < columns; ++c) {
       if (owner[c] != pool.rank()) continue;
       // An input whose values strictly increase with its strata is ranked by them, unsorted.
-      const bool by_strata = c < design.ranks.size() && design.strictly_increasing[c] != 0;
-      statistics[c] = column_statistics(layout.columns[c], values[c],
-                                        by_strata ? std::span<const std::uint32_t>(design.ranks[c]) : std::span<const std::uint32_t>{},
-                                        evaluated.status, used, campaign.campaign().outputs);
+      const bool by_strata = c < design->ranks.size() && design->strictly_increasing[c] != 0;
+      (*statistics)[c] = column_statistics(layout.columns[c], values[c],
+                                           by_strata ? std::span<const std::uint32_t>(design->ranks[c])
+                                                     : std::span<const std::uint32_t>{},
+                                           evaluated->status, *used, campaign.campaign().outputs);
       if (pool.is_coordinator()) continue;
-      const std::vector<double> message = serialize(statistics[c]);
+      const std::vector<double> message = serialize((*statistics)[c]);
       mine.push_back(static_cast<double>(c));
       mine.push_back(static_cast<double>(message.size()));
       mine.insert(mine.end(), message.begin(), message.end());
-      statistics[c] = {};
+      (*statistics)[c] = {};
     }
-    const std::vector<std::vector<double>> gathered = pool.gather(std::move(mine));
-    // The other processes go on with the next line's design meanwhile.
-    LineResult result = pool.is_coordinator() ? assemble_result(campaign, line, design, evaluated) : LineResult{};
-    LineStatistics finished;
     if (pool.is_coordinator()) {
-      for (const std::vector<double>& contribution : gathered) {
-        for (std::size_t at = 0; at < contribution.size();) {
-          const auto c = static_cast<std::size_t>(contribution[at]);
-          const auto size = static_cast<std::size_t>(contribution[at + 1]);
-          statistics[c] = deserialize(std::span<const double>(contribution).subspan(at + 2, size));
-          at += 2 + size;
+      // Finished during the next line's design (or after the last line).
+      finish_line = [&campaign, &pool, &observer, &line, design, evaluated, used, statistics] {
+        const std::vector<std::vector<double>> gathered = pool.gather({});
+        for (const std::vector<double>& contribution : gathered) {
+          for (std::size_t at = 0; at < contribution.size();) {
+            const auto c = static_cast<std::size_t>(contribution[at]);
+            const auto size = static_cast<std::size_t>(contribution[at + 1]);
+            (*statistics)[c] = deserialize(std::span<const double>(contribution).subspan(at + 2, size));
+            at += 2 + size;
+          }
         }
-      }
-      std::vector<ColumnAnalysis> analyses;
-      for (ColumnStatistics& column : statistics) analyses.push_back(std::move(column.analysis));
-      finished.analysis = combine_column_analyses(result, used, analyses);
-      for (const std::string& output : campaign.campaign().outputs) {
-        for (std::size_t c = 0; c < columns; ++c) {
-          if (result.columns[c].quantity != output || !statistics[c].summary) continue;
-          QuantitySummary summary = *statistics[c].summary;
-          summary.line = result.name;
-          summary.quantity = result.columns[c].quantity;
-          summary.unit = std::string(result.columns[c].unit->symbol);
-          finished.summaries.push_back(std::move(summary));
+        LineResult result = assemble_result(campaign, line, *design, *evaluated);
+        LineStatistics finished;
+        std::vector<ColumnAnalysis> analyses;
+        for (ColumnStatistics& column : *statistics) analyses.push_back(std::move(column.analysis));
+        finished.analysis = combine_column_analyses(result, *used, analyses);
+        for (const std::string& output : campaign.campaign().outputs) {
+          for (std::size_t c = 0; c < result.columns.size(); ++c) {
+            if (result.columns[c].quantity != output || !(*statistics)[c].summary) continue;
+            QuantitySummary summary = *(*statistics)[c].summary;
+            summary.line = result.name;
+            summary.quantity = result.columns[c].quantity;
+            summary.unit = std::string(result.columns[c].unit->symbol);
+            finished.summaries.push_back(std::move(summary));
+          }
         }
-      }
+        observer.line_analyzed(std::move(result), std::move(finished), design->warnings);
+      };
+    } else {
+      pool.gather(std::move(mine));
     }
     outcome.timings.statistics += seconds_since(start);
-
-    start = Clock::now();
-    observer_failure.run(pool, [&] { observer.line_analyzed(std::move(result), std::move(finished), design.warnings); });
-    outcome.timings.observer += seconds_since(start);
   }
+  finish_previous_line();
   observer_failure.share(pool);
   return outcome;
 }

@@ -53,10 +53,15 @@ void probe_gently(int source, MPI_Status& status) {
   }
 }
 
+// A broadcast whose receivers wait gently for the root, then move the data at full speed: a
+// large broadcast goes in segments, each needing both sides to poll, which sleeping between
+// polls would slow tenfold.
 void broadcast_gently(void* data, int count, MPI_Datatype type, int root) {
+  char ready = 1;
   MPI_Request request;
-  MPI_Ibcast(data, count, type, root, MPI_COMM_WORLD, &request);
+  MPI_Ibcast(&ready, 1, MPI_CHAR, root, MPI_COMM_WORLD, &request);
   wait_gently(request);
+  MPI_Bcast(data, count, type, root, MPI_COMM_WORLD);
 }
 
 void finalize_mpi() {
@@ -81,6 +86,17 @@ class MpiPool final : public Pool {
     }
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  }
+
+  ~MpiPool() override {
+    // Rank 0 takes every gather's numbers in the normal course of a run; after a failure it may
+    // not have, and waiting would hang: what is still pending is let go.
+    forget_sent();
+    for (Sent& sent : sent_) {
+      for (MPI_Request& request : sent.requests) {
+        if (request != MPI_REQUEST_NULL) MPI_Request_free(&request);
+      }
+    }
   }
 
   int rank() const override { return rank_; }
@@ -110,28 +126,33 @@ class MpiPool final : public Pool {
     // Sizes first, then the numbers in pieces (MPI counts are ints), rank by rank.
     constexpr std::size_t piece = std::size_t{1} << 27;  // doubles: 1 GiB
     std::vector<std::vector<double>> all;
-    MPI_Request request;
+    // A sender does not wait: its numbers go out in the background (kept here until rank 0 has
+    // taken them), so that it can go on while rank 0 is busy. Rank 0 waits gently for each
+    // sender's size, then receives at full speed.
+    forget_sent();
     if (rank_ != 0) {
-      std::uint64_t size = values.size();
-      MPI_Isend(&size, 1, MPI_UINT64_T, 0, gather_tag, MPI_COMM_WORLD, &request);
-      wait_gently(request);
-      for (std::size_t done = 0; done < values.size(); done += piece) {
-        MPI_Isend(values.data() + done, static_cast<int>(std::min(piece, values.size() - done)), MPI_DOUBLE, 0, gather_tag,
-                  MPI_COMM_WORLD, &request);
-        wait_gently(request);
+      Sent& sent = sent_.emplace_back();
+      sent.size = values.size();
+      sent.values = std::move(values);
+      sent.requests.emplace_back();
+      MPI_Isend(&sent.size, 1, MPI_UINT64_T, 0, gather_tag, MPI_COMM_WORLD, &sent.requests.back());
+      for (std::size_t done = 0; done < sent.values.size(); done += piece) {
+        sent.requests.emplace_back();
+        MPI_Isend(sent.values.data() + done, static_cast<int>(std::min(piece, sent.values.size() - done)), MPI_DOUBLE, 0,
+                  gather_tag, MPI_COMM_WORLD, &sent.requests.back());
       }
       return all;
     }
     all.push_back(std::move(values));
     for (int source = 1; source < size_; ++source) {
+      MPI_Status status;
+      probe_gently(source, status);
       std::uint64_t size = 0;
-      MPI_Irecv(&size, 1, MPI_UINT64_T, source, gather_tag, MPI_COMM_WORLD, &request);
-      wait_gently(request);
+      MPI_Recv(&size, 1, MPI_UINT64_T, source, gather_tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
       std::vector<double>& received = all.emplace_back(size);
       for (std::size_t done = 0; done < received.size(); done += piece) {
-        MPI_Irecv(received.data() + done, static_cast<int>(std::min(piece, received.size() - done)), MPI_DOUBLE, source,
-                  gather_tag, MPI_COMM_WORLD, &request);
-        wait_gently(request);
+        MPI_Recv(received.data() + done, static_cast<int>(std::min(piece, received.size() - done)), MPI_DOUBLE, source,
+                 gather_tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
       }
     }
     return all;
@@ -267,8 +288,27 @@ class MpiPool final : public Pool {
     }
   }
 
+  // Numbers a gather sent and rank 0 may not have taken yet (their buffers must live until then).
+  struct Sent {
+    std::uint64_t size = 0;
+    std::vector<double> values;
+    std::vector<MPI_Request> requests;
+  };
+
+  // Drops what rank 0 has taken.
+  void forget_sent() {
+    while (!sent_.empty()) {
+      int done = 0;
+      MPI_Testall(static_cast<int>(sent_.front().requests.size()), sent_.front().requests.data(), &done,
+                  MPI_STATUSES_IGNORE);
+      if (!done) return;
+      sent_.pop_front();
+    }
+  }
+
   int rank_ = 0;
   int size_ = 1;
+  std::deque<Sent> sent_;  // a deque never moves its elements: the buffers stay put
 };
 
 }  // namespace

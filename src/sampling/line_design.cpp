@@ -179,15 +179,19 @@ LineDesigner::LineDesigner(std::string_view line_name, std::vector<DesignVariabl
   prepared.table = detail::van_der_waerden_table(n);
   prepared.shuffled.resize(n * (m - 1));
   std::vector<const double*> columns{prepared.table->score.data()};
+  const auto column = [&](std::size_t j) { return std::span<double>(prepared.shuffled.data() + (j - 1) * n, n); };
   for (std::size_t j = 0; j < m; ++j) {
     prepared.after_shuffle.emplace_back(stream_key(options.seed, line_name, prepared.variables[j].name));
     if (j == 0) continue;
-    const std::span<double> column(prepared.shuffled.data() + (j - 1) * n, n);
     if (shared == nullptr || shared->shuffles_here[j] != 0) {
-      detail::shuffled_copy(prepared.table->score, column, prepared.after_shuffle[j]);
+      detail::shuffled_copy(prepared.table->score, column(j), prepared.after_shuffle[j]);
     }
-    if (shared != nullptr) shared->share(j, column);
-    columns.push_back(column.data());
+    columns.push_back(column(j).data());
+  }
+  // Every process shuffles its columns first, then they are shared, so that no process waits
+  // for another's shuffle before doing its own.
+  if (shared != nullptr) {
+    for (std::size_t j = 1; j < m; ++j) shared->share(j, column(j));
   }
   prepared.sample_of_row.resize(n);
   detail::shuffle_strata(prepared.sample_of_row, prepared.after_shuffle[0]);

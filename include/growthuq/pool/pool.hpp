@@ -66,9 +66,11 @@ class Pool {
   virtual void broadcast_bytes(std::span<std::byte> data, int root) = 0;
 
   // Collects what every process contributes on the coordinator: rank 0 gets all contributions
-  // in rank order (its own first), the others an empty vector. Every process calls it. For work
-  // shared out in advance (each process knows its part), where the dynamic run() would make
-  // the coordinator both compute and serve.
+  // in rank order (its own first), the others an empty vector at once (their numbers go out in
+  // the background, so that they need not wait for rank 0). Every process calls it, the same
+  // number of times in the same order, but not necessarily at the same moment. For work shared
+  // out in advance (each process knows its part), where the dynamic run() would make the
+  // coordinator both compute and serve.
   virtual std::vector<std::vector<double>> gather(std::vector<double> values) = 0;
 
   // broadcast_bytes for a contiguous vector of numbers, resized to `size` first.

@@ -63,9 +63,9 @@ class LineDesigner {
  public:
   // Processes may share the preparation too: the shuffled score columns of a correlated design
   // are its largest part. shuffles_here[j] (one per variable; entry 0 is not used) says whether
-  // this process shuffles variable j's scores; share(j, scores) is called for every j >= 1 in
-  // order, on every process, and must leave in `scores` that column as the process that
-  // shuffled it has it (a broadcast from it). A process can then compute only the columns it
+  // this process shuffles variable j's scores; once it has shuffled them all, share(j, scores)
+  // is called for every j >= 1 in order, on every process, and must leave in `scores` that
+  // column as the process that shuffled it has it (a broadcast from it). A process can then compute only the columns it
   // shuffled itself (the rest of their streams are its own), and column 0.
   struct SharedPreparation {
     std::vector<std::uint8_t> shuffles_here;
