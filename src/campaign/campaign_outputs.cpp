@@ -2,8 +2,17 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <optional>
+#include <thread>
+#include <utility>
+
+#if defined(__linux__)
+#include <pthread.h>
+#include <sched.h>
+#include <unistd.h>
+#endif
 
 #include "growthuq/campaign/campaign_report.hpp"
 #include "growthuq/campaign/checkpoint.hpp"
@@ -13,7 +22,6 @@
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/io/results_h5.hpp"
 #include "growthuq/stats/line_analysis.hpp"
-#include "growthuq/stats/quantity_summary.hpp"
 
 namespace growthuq {
 namespace {
@@ -75,13 +83,36 @@ std::vector<std::string> sample_columns(const PreparedCampaign& campaign) {
   return columns;
 }
 
-// Streams each finished line to the writers and keeps only its summaries and report text.
+// Lets the calling thread run on any processor. mpirun binds each process to one core, and a
+// thread inherits its process's binding: the writer would then take its time from the
+// coordinator's own core while the other cores wait for the coordinator (measured: the
+// coordinator's share of a 2-process campaign 40 % slower). Where this is not possible nothing
+// changes.
+void use_every_processor() {
+#if defined(__linux__)
+  cpu_set_t every;
+  CPU_ZERO(&every);
+  const long processors = sysconf(_SC_NPROCESSORS_ONLN);
+  for (long cpu = 0; cpu < processors && cpu < CPU_SETSIZE; ++cpu) CPU_SET(static_cast<int>(cpu), &every);
+  pthread_setaffinity_np(pthread_self(), sizeof every, &every);
+#endif
+}
+
+// Streams each finished line to the writers and keeps only its summaries and report text. The
+// files are written on a thread of their own, one line at a time, while the processes go on
+// with the next line (a 1e6-sample line is about 90 MB of results.h5, which costs the kernel
+// 0.1-0.6 s to take, measured); the next line waits only if the previous one is still being
+// written. A write that failed is reported at the next line or at finish().
 class OutputObserver final : public RunObserver {
  public:
   OutputObserver(const PreparedCampaign& campaign, const OutputSettings& settings, std::ostream& log)
       : campaign_(campaign),
         log_(log),
         progress_(settings.progress, log, campaign.campaign().samples * campaign.lines().size()) {}
+
+  ~OutputObserver() override {
+    if (writer_.joinable()) writer_.join();
+  }
 
   void open(const PreparedCampaign& campaign) {
     const Campaign& c = campaign.campaign();
@@ -96,23 +127,30 @@ class OutputObserver final : public RunObserver {
   void chunk_done(ChunkRange range) override { progress_.advance(range.end - range.begin); }
 
   void line_done(const LineResult& result, const std::vector<std::string>& warnings) override {
+    LineResult copy = result;
+    line_analyzed(std::move(copy), line_statistics(result, campaign_.campaign().outputs), warnings);
+  }
+
+  void line_analyzed(LineResult&& result, LineStatistics&& statistics, const std::vector<std::string>& warnings) override {
     progress_.line_finished();
     for (const std::string& warning : warnings) log_ << "growthuq run: line '" << result.name << "': " << warning << "\n";
-    std::vector<QuantitySummary> line_summaries;
-    for (const std::string& output : campaign_.campaign().outputs) {
-      for (const ResultColumn& column : result.columns) {
-        if (column.quantity == output) line_summaries.push_back(summarize_quantity(result.name, column, result.status));
-      }
-    }
-    summaries_.insert(summaries_.end(), line_summaries.begin(), line_summaries.end());
-    if (samples_) samples_->write_line(result);
-    const LineAnalysis analysis = analyze_line(result);
-    if (h5_) h5_->write_line(result, line_summaries, analysis);
+    summaries_.insert(summaries_.end(), statistics.summaries.begin(), statistics.summaries.end());
     line_reports_ += "\nline " + result.name + ": input rank correlation (Spearman)\n" + format_input_correlation(result) +
-                     format_line_analysis(analysis);
+                     format_line_analysis(statistics.analysis);
+    wait_for_writer();
+    writer_ = std::thread([this, line = std::move(result), written = std::move(statistics)] {
+      use_every_processor();
+      try {
+        if (samples_) samples_->write_line(line);
+        if (h5_) h5_->write_line(line, written.summaries, written.analysis);
+      } catch (...) {
+        failure_ = std::current_exception();
+      }
+    });
   }
 
   void finish(const CampaignOutcome& outcome, const OutputSettings& settings, std::ostream& report) {
+    wait_for_writer();
     const Campaign& c = campaign_.campaign();
     if (samples_) samples_->finish();
     write_file_atomically(in_directory(c.output_dir, summary_csv_name), summary_csv_text(summaries_), Overwrite::allow);
@@ -144,11 +182,18 @@ class OutputObserver final : public RunObserver {
   // After a failure or a stop: closes the writers, which remove their .partial files.
   void abandon() {
     progress_.stopped();
+    if (writer_.joinable()) writer_.join();
     samples_.reset();
     h5_.reset();
   }
 
  private:
+  // Waits for the line being written and raises what its writing threw.
+  void wait_for_writer() {
+    if (writer_.joinable()) writer_.join();
+    if (failure_) std::rethrow_exception(std::exchange(failure_, nullptr));
+  }
+
   const PreparedCampaign& campaign_;
   std::ostream& log_;
   Progress progress_;
@@ -156,6 +201,8 @@ class OutputObserver final : public RunObserver {
   std::optional<ResultsH5Writer> h5_;
   std::vector<QuantitySummary> summaries_;
   std::string line_reports_;
+  std::thread writer_;
+  std::exception_ptr failure_;
 };
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/large_vector.hpp"
 #include "growthuq/core/units.hpp"
 #include "growthuq/growth/kappa.hpp"
 #include "growthuq/rawdata/raw_line_fit.hpp"
@@ -74,7 +75,7 @@ ReplicateLine evaluate_replicate_line(const PreparedCampaign& campaign, const Pr
     if (computed_index == computed.end()) continue;
     const Unit& unit = find_unit(find_quantity(output)->default_unit, "quantity table", output);
     const std::size_t o = static_cast<std::size_t>(computed_index - computed.begin());
-    std::vector<double> column(values.begin() + static_cast<std::ptrdiff_t>(o * samples),
+    LargeVector<double> column(values.begin() + static_cast<std::ptrdiff_t>(o * samples),
                                values.begin() + static_cast<std::ptrdiff_t>((o + 1) * samples));
     for (double& value : column) value /= unit.to_si;
     result.outputs.push_back(ResultColumn{output, &unit, false, std::move(column)});
@@ -123,7 +124,7 @@ std::vector<std::vector<QuantitySummary>> replicate_summaries(const PreparedCamp
         const LineDistributions& laws = refit ? *refit : original.distributions;
         const LineVariable* v_exp = laws.find("v_exp");
         ResultColumn* v = column_of(result, "v");
-        std::vector<double> v_si(v->values);
+        std::vector<double> v_si(v->values.begin(), v->values.end());
         for (double& value : v_si) value *= v->unit->to_si;
         kappa = calibrate_kappa(c.reference_line, quantile(v_exp->distribution, 0.5) * v_exp->unit->to_si,
                                 median_growth_rate(v_si, result.status));

@@ -4,6 +4,8 @@
 // the file, or the checkpoint manifest with --resume, and broadcasts it); only rank 0 prints.
 // Ctrl-C or SIGTERM stops the run after the chunks under way; the checkpoint keeps every
 // finished chunk for `growthuq run --resume DIR`.
+#include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -130,11 +132,20 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
   // signal decides for every process); a second one ends the process.
   const InterruptHandlers handlers;
   pool.stop_when([] { return interrupt_signal(); });
+  CampaignOutcome outcome;
   try {
-    run_campaign_with_outputs(*prepared, pool, settings, std::cout, std::cerr);
+    outcome = run_campaign_with_outputs(*prepared, pool, settings, std::cout, std::cerr);
   } catch (const RunInterrupted& interrupted) {
     if (pool.is_coordinator()) std::cerr << "growthuq run: " << interrupted.what() << "\n";
     return exit_status_of_signal(interrupted.reason());
+  }
+  if (std::getenv("GROWTHUQ_TIMINGS") != nullptr) {
+    // One line per process, for measuring how the work is shared (tools/bench-campaign-scaling).
+    const RunTimings& t = outcome.run.timings;
+    std::fprintf(stderr,
+                 "growthuq run: timings of process %d of %d [s]: design %.3f evaluation %.3f sharing %.3f statistics %.3f "
+                 "observer %.3f\n",
+                 pool.rank(), pool.size(), t.design, t.evaluation, t.sharing, t.statistics, t.observer);
   }
   return 0;
 }

@@ -3,16 +3,21 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
+#include <utility>
 
-#include <Eigen/Cholesky>
-
+#include "correlation/score_reordering.hpp"
 #include "growthuq/distributions/standard_normal.hpp"
 #include "sampling/avx2_clone.hpp"
 #include "sampling/large_buffer.hpp"
+#include "stats/cross_products.hpp"
 #include "stats/keyed_sort.hpp"
 
 namespace growthuq {
+
+namespace detail {
 
 namespace {
 
@@ -32,7 +37,18 @@ void linear_keys(const double* x, std::size_t count, double bound, double scale,
   }
 }
 
-// score[k] = Phi^-1((k + 1) / (n + 1)), k < n = score.size().
+// The same with the sample of each row as the index: (key(x[i]) << 32) | sample[i].
+GROWTHUQ_AVX2_CLONE
+void linear_keys(const double* x, std::size_t count, double bound, double scale, const std::uint32_t* sample,
+                 std::uint64_t* records) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const double y = std::min(std::max((x[i] + bound) * scale, 0.0), 4294967295.0) + 0x1.0p52;
+    records[i] = (std::bit_cast<std::uint64_t>(y) << 32) | sample[i];
+  }
+}
+
+}  // namespace
+
 void fill_van_der_waerden_scores(std::span<double> score) {
   const std::size_t n = score.size();
   const double denominator = static_cast<double>(n) + 1.0;
@@ -46,17 +62,106 @@ void fill_van_der_waerden_scores(std::span<double> score) {
   if (n % 2 == 1) score[half] = 0.0;
 }
 
-}  // namespace
+std::shared_ptr<const ScoreTable> van_der_waerden_table(std::size_t n) {
+  static std::mutex mutex;
+  static std::shared_ptr<const ScoreTable> last;
+  {
+    const std::lock_guard lock(mutex);
+    if (last && last->score.size() == n) return last;
+  }
+  auto table = std::make_shared<ScoreTable>();
+  table->score.resize(n);
+  fill_van_der_waerden_scores(table->score);
+  for (const double x : table->score) table->sum_of_squares += x * x;
+  const std::lock_guard lock(mutex);
+  last = table;
+  return table;
+}
+
+ScoreReordering::ScoreReordering(std::vector<const double*> columns, const ScoreTable& table,
+                                 const Eigen::LLT<Eigen::MatrixXd>& target)
+    : columns_(std::move(columns)), n_(table.score.size()), largest_score_(table.score.empty() ? 0.0 : table.score.back()) {
+  const auto m = static_cast<Eigen::Index>(columns_.size());
+  Eigen::MatrixXd sample_correlation(m, m);
+  sample_correlation = cross_products(columns_, n_) / table.sum_of_squares;
+  const Eigen::LLT<Eigen::MatrixXd> sample(sample_correlation);
+  if (sample.info() != Eigen::Success) return;
+  // M = P Q^-1, from M Q = P  <=>  Q^T M^T = P^T (a triangular solve).
+  const Eigen::MatrixXd p = target.matrixL();
+  const Eigen::MatrixXd q = sample.matrixL();
+  mix_ = q.transpose().triangularView<Eigen::Upper>().solve(p.transpose()).transpose();
+  valid_ = true;
+}
+
+void ScoreReordering::set_row_order(std::span<const std::uint32_t> sample_of_row,
+                                    std::span<const std::uint32_t> row_of_sample) {
+  if (sample_of_row.size() != n_ || row_of_sample.size() != n_) {
+    throw std::invalid_argument("ScoreReordering::set_row_order: the row order does not have n entries");
+  }
+  sample_of_row_ = sample_of_row;
+  row_of_sample_ = row_of_sample;
+}
+
+double ScoreReordering::transformed_score(std::size_t j, std::size_t row) const {
+  const auto jj = static_cast<Eigen::Index>(j);
+  double x = columns_[j][row] * mix_(jj, jj);
+  for (Eigen::Index k = 0; k < jj; ++k) x += mix_(jj, k) * columns_[static_cast<std::size_t>(k)][row];
+  return x;
+}
+
+void ScoreReordering::sort_column(std::size_t j, std::span<std::uint64_t> records, std::span<std::uint64_t> scratch,
+                                  const Run& run) const {
+  const auto jj = static_cast<Eigen::Index>(j);
+  // The ranks come from records of a 32-bit key linear in the transformed score (key ties are
+  // rare and resolved on the scores themselves), never from a stored column of transformed
+  // scores. |S*_ij| <= bound, so (x + bound) * scale is in [0, 2^32) (the margin covers
+  // rounding); both operations round monotonically, so the key is monotone in x.
+  double bound = 0.0;
+  for (Eigen::Index k = 0; k <= jj; ++k) bound += std::fabs(mix_(jj, k));
+  bound *= (1.0 + 1e-9) * std::fabs(largest_score_);
+  const double scale = 0x1.0p32 * (1.0 - 1e-9) / (2.0 * bound);
+  const double diagonal = mix_(jj, jj);
+  // x a chunk of rows at a time (sequential passes over the score columns vectorize), then keys;
+  // the same operations in the same order as transformed_score, so the same bits.
+  constexpr std::size_t chunk = 2048;
+  double mixed[chunk];
+  for (std::size_t first = 0; first < n_; first += chunk) {
+    const std::size_t count = std::min(chunk, n_ - first);
+    const double* own = columns_[j] + first;
+    for (std::size_t i = 0; i < count; ++i) mixed[i] = own[i] * diagonal;
+    for (Eigen::Index k = 0; k < jj; ++k) {
+      const double factor = mix_(jj, k);
+      const double* in = columns_[static_cast<std::size_t>(k)] + first;
+      for (std::size_t i = 0; i < count; ++i) mixed[i] += factor * in[i];
+    }
+    if (sample_of_row_.empty()) {
+      linear_keys(mixed, count, bound, scale, first, records.data() + first);
+    } else {
+      linear_keys(mixed, count, bound, scale, sample_of_row_.data() + first, records.data() + first);
+    }
+  }
+  const auto value = [&](std::uint32_t sample) {
+    return transformed_score(j, row_of_sample_.empty() ? sample : row_of_sample_[sample]);
+  };
+  // 24 sorted key bits: near the centre about 8 n / 2^24 records (0.5 at n = 1e6) share them,
+  // and the insertion pass of sort_bucket orders those.
+  for_each_sorted_run(records.first(n_), scratch.first(n_), 24, [&](std::size_t first, std::span<std::uint64_t> sorted) {
+    order_equal_keys(sorted, value);
+    run(first, sorted);
+  });
+}
+
+}  // namespace detail
 
 std::vector<double> van_der_waerden_scores(std::size_t n) {
   std::vector<double> score(n);
-  fill_van_der_waerden_scores(score);
+  detail::fill_van_der_waerden_scores(score);
   return score;
 }
 
 ImanConoverOutcome iman_conover(std::span<std::vector<std::uint32_t>> ranks, const Eigen::MatrixXd& normal_correlation) {
-  const auto m = static_cast<Eigen::Index>(ranks.size());
-  if (normal_correlation.rows() != m || normal_correlation.cols() != m) {
+  const std::size_t m = ranks.size();
+  if (normal_correlation.rows() != static_cast<Eigen::Index>(m) || normal_correlation.cols() != static_cast<Eigen::Index>(m)) {
     throw std::invalid_argument("iman_conover: correlation matrix does not match the number of columns");
   }
   if (m < 2) return {true, ""};
@@ -64,7 +169,7 @@ ImanConoverOutcome iman_conover(std::span<std::vector<std::uint32_t>> ranks, con
   for (const auto& column : ranks) {
     if (column.size() != n) throw std::invalid_argument("iman_conover: columns differ in length");
   }
-  if (n <= static_cast<std::size_t>(m)) {
+  if (n <= m) {
     return {false, "a rank correlation between " + std::to_string(m) + " variables cannot be imposed on " +
                        std::to_string(n) + " samples (it needs more samples than variables); the design is uncorrelated"};
   }
@@ -74,84 +179,40 @@ ImanConoverOutcome iman_conover(std::span<std::vector<std::uint32_t>> ranks, con
     throw std::invalid_argument("iman_conover: target correlation is not positive definite");
   }
 
-  detail::LargeBuffer<double> score(n);
-  fill_van_der_waerden_scores(std::span<double>(score.data(), n));
-  const auto rows = static_cast<Eigen::Index>(n);
-  detail::LargeBuffer<double> score_storage(n * static_cast<std::size_t>(m));
-  Eigen::Map<Eigen::MatrixXd> scores(score_storage.data(), rows, m);
-  for (Eigen::Index j = 0; j < m; ++j) {
-    const std::uint32_t* rank = ranks[static_cast<std::size_t>(j)].data();
-    double* column = scores.col(j).data();
+  const std::shared_ptr<const detail::ScoreTable> table = detail::van_der_waerden_table(n);
+  const double* score = table->score.data();
+  detail::LargeBuffer<double> scores(n * m);
+  std::vector<const double*> columns;
+  for (std::size_t j = 0; j < m; ++j) {
+    const std::uint32_t* rank = ranks[j].data();
+    double* column = scores.data() + j * n;
+    columns.push_back(column);
     // A random gather from an 8n-byte table: prefetching a fixed distance ahead keeps enough
     // cache misses in flight (measured 2-3x faster at n = 1e6 than the plain loop).
     std::size_t i = 0;
-    for (; i + prefetch_distance < n; ++i) {
-      __builtin_prefetch(score.data() + rank[i + prefetch_distance]);
+    for (; i + detail::prefetch_distance < n; ++i) {
+      __builtin_prefetch(score + rank[i + detail::prefetch_distance]);
       column[i] = score[rank[i]];
     }
     for (; i < n; ++i) column[i] = score[rank[i]];
   }
-
-  // Every column holds the same scores, so T = S^T S / sum(score^2) is their correlation matrix
-  // (the scores have mean zero).
-  double sum_of_squares = 0;
-  for (std::size_t k = 0; k < n; ++k) sum_of_squares += score[k] * score[k];
-  Eigen::MatrixXd sample_correlation(m, m);
-  sample_correlation.triangularView<Eigen::Lower>() = scores.transpose() * scores / sum_of_squares;
-  const Eigen::LLT<Eigen::MatrixXd> sample(sample_correlation);
-  if (sample.info() != Eigen::Success) {
+  const detail::ScoreReordering reordering(columns, *table, target);
+  if (!reordering.valid()) {
     return {false, "the " + std::to_string(n) + " samples' score correlation is singular; the design is uncorrelated"};
   }
-  // M = P Q^-1, from M Q = P  <=>  Q^T M^T = P^T (a triangular solve).
-  const Eigen::MatrixXd p = target.matrixL();
-  const Eigen::MatrixXd q = sample.matrixL();
-  const Eigen::MatrixXd mix = q.transpose().triangularView<Eigen::Upper>().solve(p.transpose()).transpose();
-
-  // Column j of S* is S_j m_jj + S_0 m_j0 + ... + S_{j-1} m_j,j-1, summed in that order
-  // (transformed_score recomputes any element bit for bit). Its ranks come from records of a
-  // 32-bit key linear in the score (key ties are rare and resolved on the scores themselves),
-  // never from a stored column of transformed scores.
-  const auto transformed_score = [&](Eigen::Index j, std::size_t i) {
-    const auto row = static_cast<Eigen::Index>(i);
-    double x = scores(row, j) * mix(j, j);
-    for (Eigen::Index k = 0; k < j; ++k) x += mix(j, k) * scores(row, k);
-    return x;
-  };
   detail::LargeBuffer<std::uint64_t> records(n), scratch(n);
-  const std::span<std::uint64_t> sorted(records.data(), n);
-  for (Eigen::Index j = 1; j < m; ++j) {
-    // |S*_ij| <= bound, so (x + bound) * scale is in [0, 2^32) (the margin covers rounding);
-    // both operations round monotonically, so the key is monotone in x.
-    double bound = 0.0;
-    for (Eigen::Index k = 0; k <= j; ++k) bound += std::fabs(mix(j, k));
-    bound *= (1.0 + 1e-9) * std::fabs(score[n - 1]);
-    const double scale = 0x1.0p32 * (1.0 - 1e-9) / (2.0 * bound);
-    const double diagonal = mix(j, j);
-    // x a chunk of rows at a time (sequential passes over the score columns vectorize), then keys.
-    constexpr std::size_t chunk = 2048;
-    double mixed[chunk];
-    for (std::size_t first = 0; first < n; first += chunk) {
-      const std::size_t count = std::min(chunk, n - first);
-      const double* own = scores.col(j).data() + first;
-      for (std::size_t i = 0; i < count; ++i) mixed[i] = own[i] * diagonal;
-      for (Eigen::Index k = 0; k < j; ++k) {
-        const double factor = mix(j, k);
-        const double* in = scores.col(k).data() + first;
-        for (std::size_t i = 0; i < count; ++i) mixed[i] += factor * in[i];
-      }
-      linear_keys(mixed, count, bound, scale, first, records.data() + first);
-    }
-    // 24 sorted key bits: near the centre about 8 n / 2^24 records (0.5 at n = 1e6) share them,
-    // and the insertion pass of sort_records orders those.
-    detail::sort_records(sorted, std::span<std::uint64_t>(scratch.data(), n), 24);
-    detail::order_equal_keys(sorted, [&](std::uint32_t i) { return transformed_score(j, i); });
-    std::uint32_t* rank = ranks[static_cast<std::size_t>(j)].data();
-    std::size_t position = 0;
-    for (; position + prefetch_distance < n; ++position) {
-      __builtin_prefetch(rank + detail::record_index(records[position + prefetch_distance]), 1);
-      rank[detail::record_index(records[position])] = static_cast<std::uint32_t>(position);
-    }
-    for (; position < n; ++position) rank[detail::record_index(records[position])] = static_cast<std::uint32_t>(position);
+  for (std::size_t j = 1; j < m; ++j) {
+    std::uint32_t* rank = ranks[j].data();
+    reordering.sort_column(j, std::span<std::uint64_t>(records.data(), n), std::span<std::uint64_t>(scratch.data(), n),
+                           [&](std::size_t first, std::span<const std::uint64_t> sorted) {
+                             const std::size_t size = sorted.size();
+                             for (std::size_t p = 0; p < size; ++p) {
+                               if (p + detail::prefetch_distance < size) {
+                                 __builtin_prefetch(rank + detail::record_index(sorted[p + detail::prefetch_distance]), 1);
+                               }
+                               rank[detail::record_index(sorted[p])] = static_cast<std::uint32_t>(first + p);
+                             }
+                           });
   }
   return {true, ""};
 }

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <numeric>
+#include <span>
 #include <stdexcept>
 #include <string_view>
 #include <utility>
@@ -78,7 +79,7 @@ H5::Group create_untimed_group(const H5::H5Location& parent, const std::string& 
 
 template <typename T>
 H5::DataSet write_vector(H5::Group& group, const std::string& name, const H5::PredType& file_type,
-                         const H5::PredType& memory_type, const std::vector<T>& values) {
+                         const H5::PredType& memory_type, std::span<const T> values) {
   const hsize_t size = values.size();
   H5::DataSet dataset = group.createDataSet(name, file_type, H5::DataSpace(1, &size), untimed_dataset());
   if (!values.empty()) dataset.write(values.data(), memory_type);
@@ -199,17 +200,18 @@ void ResultsH5Writer::write_line(const LineResult& result, const std::vector<Qua
     write_u64_attribute(group, "samples", samples);
     for (const ResultColumn& column : result.columns) {
       H5::DataSet dataset = write_vector(group, column.column_name(), H5::PredType::IEEE_F64LE,
-                                         H5::PredType::NATIVE_DOUBLE, column.values);
+                                         H5::PredType::NATIVE_DOUBLE, std::span<const double>(column.values));
       write_string_attribute(dataset, "quantity", column.quantity);
       write_string_attribute(dataset, "unit", std::string(column.unit->symbol));
       write_string_attribute(dataset, "role", column.is_input ? "input" : "output");
     }
     std::vector<std::uint64_t> index(samples);
     std::iota(index.begin(), index.end(), std::uint64_t{0});
-    write_vector(group, "sample", H5::PredType::STD_U64LE, H5::PredType::NATIVE_UINT64, index);
+    write_vector(group, "sample", H5::PredType::STD_U64LE, H5::PredType::NATIVE_UINT64, std::span<const std::uint64_t>(index));
     std::vector<std::uint8_t> codes(samples);
     for (std::size_t i = 0; i < samples; ++i) codes[i] = static_cast<std::uint8_t>(result.status[i]);
-    H5::DataSet status = write_vector(group, "status", H5::PredType::STD_U8LE, H5::PredType::NATIVE_UINT8, codes);
+    H5::DataSet status =
+        write_vector(group, "status", H5::PredType::STD_U8LE, H5::PredType::NATIVE_UINT8, std::span<const std::uint8_t>(codes));
     write_strings_attribute(status, "names", status_names());
 
     write_summary(group, "summary", summaries);
@@ -349,7 +351,7 @@ void ResultsH5Writer::write_array(const std::string& path, const std::vector<dou
   try {
     const auto [parent, leaf] = split_path(path);
     H5::Group group = group_at(file_->file, parent);
-    write_vector(group, leaf, H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, values);
+    write_vector(group, leaf, H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, std::span<const double>(values));
   } catch (const H5::Exception& error) {
     rethrow_hdf5(file_->partial, error);
   }
@@ -360,7 +362,7 @@ void ResultsH5Writer::write_array(const std::string& path, const std::vector<std
   try {
     const auto [parent, leaf] = split_path(path);
     H5::Group group = group_at(file_->file, parent);
-    write_vector(group, leaf, H5::PredType::STD_I32LE, H5::PredType::NATIVE_INT32, values);
+    write_vector(group, leaf, H5::PredType::STD_I32LE, H5::PredType::NATIVE_INT32, std::span<const std::int32_t>(values));
   } catch (const H5::Exception& error) {
     rethrow_hdf5(file_->partial, error);
   }

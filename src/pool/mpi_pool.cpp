@@ -1,6 +1,6 @@
 // The MPI pool: the only file of the engine that includes mpi.h.
 //
-// Protocol (dynamic master/worker where the master also works): rank 0 keeps up to two
+// Protocol (dynamic master/worker where the master also works): rank 0 keeps up to three
 // chunks assigned to every other rank, so a worker never idles waiting for the next one, and
 // computes chunks itself between serving messages. A worker answers each ASSIGN with a RESULT
 // (chunk index + values) or a FAILURE (chunk index + reason). When everything is sunk, or after
@@ -11,17 +11,60 @@
 // "F<reason>" failed, "S<request>" stopped) and every rank returns or throws the same.
 #include <mpi.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstdlib>
 #include <deque>
 #include <string>
+#include <thread>
+#include <utility>
+#include <vector>
 
 #include "growthuq/pool/pool.hpp"
 
 namespace growthuq {
 namespace {
 
-enum Tag : int { assign_tag = 1, result_tag = 2, failure_tag = 3, stop_tag = 4, done_tag = 5 };
+// Chunks kept assigned to each worker: enough that a worker still has work while rank 0 is busy
+// with a chunk of its own.
+constexpr int queued_per_worker = 3;
+
+enum Tag : int { assign_tag = 1, result_tag = 2, failure_tag = 3, stop_tag = 4, done_tag = 5, gather_tag = 6 };
+
+// Waiting without spinning a core: MPI's own blocking calls poll flat out, which on a machine
+// with as many processes as cores takes the core from anything else that could run there (the
+// coordinator's writer thread, other programs). These poll, then sleep a little longer each time
+// (10 us doubling to 200 us: a message then waits at most that much more than it would).
+void pause_between_polls(long& microseconds) {
+  std::this_thread::sleep_for(std::chrono::microseconds(microseconds));
+  microseconds = std::min(2 * microseconds, 200L);
+}
+
+void wait_gently(MPI_Request& request) {
+  int done = 0;
+  MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+  for (long pause = 10; !done; MPI_Test(&request, &done, MPI_STATUS_IGNORE)) pause_between_polls(pause);
+}
+
+void probe_gently(int source, MPI_Status& status) {
+  int pending = 0;
+  MPI_Iprobe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &pending, &status);
+  for (long pause = 10; !pending; MPI_Iprobe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &pending, &status)) {
+    pause_between_polls(pause);
+  }
+}
+
+// A broadcast whose receivers wait gently for the root, then move the data at full speed: a
+// large broadcast goes in segments, each needing both sides to poll, which sleeping between
+// polls would slow tenfold.
+void broadcast_gently(void* data, int count, MPI_Datatype type, int root) {
+  char ready = 1;
+  MPI_Request request;
+  MPI_Ibcast(&ready, 1, MPI_CHAR, root, MPI_COMM_WORLD, &request);
+  wait_gently(request);
+  MPI_Bcast(data, count, type, root, MPI_COMM_WORLD);
+}
 
 void finalize_mpi() {
   int finalized = 0;
@@ -47,6 +90,17 @@ class MpiPool final : public Pool {
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
   }
 
+  ~MpiPool() override {
+    // Rank 0 takes every gather's numbers in the normal course of a run; after a failure it may
+    // not have, and waiting would hang: what is still pending is let go.
+    forget_sent();
+    for (Sent& sent : sent_) {
+      for (MPI_Request& request : sent.requests) {
+        if (request != MPI_REQUEST_NULL) MPI_Request_free(&request);
+      }
+    }
+  }
+
   int rank() const override { return rank_; }
   int size() const override { return size_; }
 
@@ -65,10 +119,55 @@ class MpiPool final : public Pool {
 
   std::string broadcast(const std::string& text) override {
     std::uint64_t length = text.size();
-    MPI_Bcast(&length, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+    broadcast_gently(&length, 1, MPI_UINT64_T, 0);
     std::string received = rank_ == 0 ? text : std::string(length, '\0');
-    MPI_Bcast(received.data(), static_cast<int>(length), MPI_CHAR, 0, MPI_COMM_WORLD);
+    broadcast_gently(received.data(), static_cast<int>(length), MPI_CHAR, 0);
     return received;
+  }
+
+  std::vector<std::vector<double>> gather(std::vector<double> values) override {
+    // Sizes first, then the numbers in pieces (MPI counts are ints), rank by rank.
+    constexpr std::size_t piece = std::size_t{1} << 27;  // doubles: 1 GiB
+    std::vector<std::vector<double>> all;
+    // A sender does not wait: its numbers go out in the background (kept here until rank 0 has
+    // taken them), so that it can go on while rank 0 is busy. Rank 0 waits gently for each
+    // sender's size, then receives at full speed.
+    forget_sent();
+    if (rank_ != 0) {
+      Sent& sent = sent_.emplace_back();
+      sent.size = values.size();
+      sent.values = std::move(values);
+      sent.requests.emplace_back();
+      MPI_Isend(&sent.size, 1, MPI_UINT64_T, 0, gather_tag, MPI_COMM_WORLD, &sent.requests.back());
+      for (std::size_t done = 0; done < sent.values.size(); done += piece) {
+        sent.requests.emplace_back();
+        MPI_Isend(sent.values.data() + done, static_cast<int>(std::min(piece, sent.values.size() - done)), MPI_DOUBLE, 0,
+                  gather_tag, MPI_COMM_WORLD, &sent.requests.back());
+      }
+      return all;
+    }
+    all.push_back(std::move(values));
+    for (int source = 1; source < size_; ++source) {
+      MPI_Status status;
+      probe_gently(source, status);
+      std::uint64_t size = 0;
+      MPI_Recv(&size, 1, MPI_UINT64_T, source, gather_tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      std::vector<double>& received = all.emplace_back(size);
+      for (std::size_t done = 0; done < received.size(); done += piece) {
+        MPI_Recv(received.data() + done, static_cast<int>(std::min(piece, received.size() - done)), MPI_DOUBLE, source,
+                 gather_tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      }
+    }
+    return all;
+  }
+
+  void broadcast_bytes(std::span<std::byte> data, int root) override {
+    // MPI counts are ints: pieces of at most 1 GiB.
+    constexpr std::size_t piece = std::size_t{1} << 30;
+    for (std::size_t done = 0; done < data.size(); done += piece) {
+      const std::size_t size = std::min(piece, data.size() - done);
+      broadcast_gently(data.data() + done, static_cast<int>(size), MPI_BYTE, root);
+    }
   }
 
  private:
@@ -94,7 +193,7 @@ class MpiPool final : public Pool {
         if (failure.empty()) failure = "rank 0 could not keep items [" + std::to_string(range.begin) + ", " + std::to_string(range.end) + "): " + error.what();
       }
     };
-    for (int round = 0; round < 2; ++round) {
+    for (int round = 0; round < queued_per_worker; ++round) {
       for (int worker = 1; worker < size_; ++worker) assign_next(worker);
     }
 
@@ -139,7 +238,7 @@ class MpiPool final : public Pool {
         if (failure.empty()) sink_safely(range, values);
         ++sunk;
       } else {
-        MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+        probe_gently(MPI_ANY_SOURCE, status);
         handle_message(status);
       }
     }
@@ -148,7 +247,7 @@ class MpiPool final : public Pool {
     for (int worker = 1; worker < size_; ++worker) MPI_Send(nullptr, 0, MPI_CHAR, worker, stop_tag, MPI_COMM_WORLD);
     for (int done = 0; done < size_ - 1;) {
       MPI_Status status;
-      MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+      probe_gently(MPI_ANY_SOURCE, status);
       if (status.MPI_TAG == done_tag) {
         MPI_Recv(nullptr, 0, MPI_CHAR, status.MPI_SOURCE, done_tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
         ++done;
@@ -161,11 +260,32 @@ class MpiPool final : public Pool {
   }
 
   // Ranks > 0: compute assigned chunks until STOP. Returns "" (rank 0 reports failures).
+  // Results go out without waiting (MPI_Isend): a large message is only copied when rank 0
+  // receives it, between chunks of its own, and the next queued chunk is computed meanwhile.
   std::string serve(const std::vector<ChunkRange>& all, const ChunkWork& work) {
+    struct Sending {
+      MPI_Request request;
+      std::vector<double> message;
+    };
+    std::deque<Sending> sending;  // a deque never moves its elements: buffers stay put
+    const auto complete_sent = [&](bool wait) {
+      while (!sending.empty()) {
+        int done = 0;
+        if (wait) {
+          MPI_Wait(&sending.front().request, MPI_STATUS_IGNORE);
+          done = 1;
+        } else {
+          MPI_Test(&sending.front().request, &done, MPI_STATUS_IGNORE);
+        }
+        if (!done) return;
+        sending.pop_front();
+      }
+    };
     for (;;) {
       MPI_Status status;
-      MPI_Probe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+      probe_gently(0, status);
       if (status.MPI_TAG == stop_tag) {
+        complete_sent(true);
         MPI_Recv(nullptr, 0, MPI_CHAR, 0, stop_tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
         MPI_Send(nullptr, 0, MPI_CHAR, 0, done_tag, MPI_COMM_WORLD);
         return {};
@@ -176,7 +296,11 @@ class MpiPool final : public Pool {
       try {
         std::vector<double> message = work(range);
         message.insert(message.begin(), static_cast<double>(index));
-        MPI_Send(message.data(), static_cast<int>(message.size()), MPI_DOUBLE, 0, result_tag, MPI_COMM_WORLD);
+        Sending& out = sending.emplace_back();
+        out.message = std::move(message);
+        MPI_Isend(out.message.data(), static_cast<int>(out.message.size()), MPI_DOUBLE, 0, result_tag, MPI_COMM_WORLD,
+                  &out.request);
+        complete_sent(false);
       } catch (const std::exception& error) {
         const std::string text = describe_failure(rank_, range, error.what());
         MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, 0, failure_tag, MPI_COMM_WORLD);
@@ -184,8 +308,27 @@ class MpiPool final : public Pool {
     }
   }
 
+  // Numbers a gather sent and rank 0 may not have taken yet (their buffers must live until then).
+  struct Sent {
+    std::uint64_t size = 0;
+    std::vector<double> values;
+    std::vector<MPI_Request> requests;
+  };
+
+  // Drops what rank 0 has taken.
+  void forget_sent() {
+    while (!sent_.empty()) {
+      int done = 0;
+      MPI_Testall(static_cast<int>(sent_.front().requests.size()), sent_.front().requests.data(), &done,
+                  MPI_STATUSES_IGNORE);
+      if (!done) return;
+      sent_.pop_front();
+    }
+  }
+
   int rank_ = 0;
   int size_ = 1;
+  std::deque<Sent> sent_;  // a deque never moves its elements: the buffers stay put
 };
 
 }  // namespace

@@ -1,5 +1,7 @@
 // The pool of one process, and the chunking and launcher detection shared by both pools.
 #include <cstdlib>
+#include <stdexcept>
+#include <utility>
 
 #include "growthuq/pool/pool.hpp"
 
@@ -39,6 +41,16 @@ class SerialPool final : public Pool {
   }
 
   std::string broadcast(const std::string& text) override { return text; }
+
+  std::vector<std::vector<double>> gather(std::vector<double> values) override {
+    std::vector<std::vector<double>> all;
+    all.push_back(std::move(values));
+    return all;
+  }
+
+  void broadcast_bytes(std::span<std::byte>, int root) override {
+    if (root != 0) throw std::invalid_argument("broadcast_bytes: a serial pool has only process 0");
+  }
 };
 
 }  // namespace

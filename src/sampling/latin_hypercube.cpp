@@ -7,6 +7,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "growthuq/sampling/random_stream.hpp"
 #include "sampling/avx2_clone.hpp"
@@ -16,16 +17,17 @@ namespace growthuq {
 
 namespace detail {
 
-GROWTHUQ_AVX2_CLONE
-void shuffle_strata(std::span<std::uint32_t> stratum, Mt19937_64Block& random) {
-  std::iota(stratum.begin(), stratum.end(), std::uint32_t{0});
-  // Fisher-Yates from the last position down: swap position i with j = below(i + 1) (Lemire
-  // 2019, 32-bit form, on the high then the low half of each 64-bit draw). For large n every
-  // swap is a cache miss. The draws do not depend on the array, so they run one batch ahead of
-  // the swaps: the partners of batch b + 1 are drawn and prefetched while batch b is swapped.
-  // Draws and swaps each happen in the same order as in the plain loop.
+namespace {
+
+// The inside-out shuffle of latin_column.hpp, out[r] = source(shuffled_iota[r]). For large n
+// every step touches a random element of `out`: the draws do not depend on the array, so they
+// run one batch ahead of the moves, and the elements the next batch will touch are prefetched
+// while this batch moves. Draws and moves each happen in the same order as in the plain loop.
+template <class T, class Source>
+void inside_out_shuffle(const Source& source, std::span<T> out, Mt19937_64Block& random) {
   constexpr std::size_t batch = 64;
-  std::uint32_t* values = stratum.data();
+  const std::size_t n = out.size();
+  T* values = out.data();
   std::uint32_t partners[2][batch];
   std::uint64_t word_pair = 0;
   bool has_low = false;
@@ -38,10 +40,10 @@ void shuffle_strata(std::span<std::uint32_t> stratum, Mt19937_64Block& random) {
     has_low = true;
     return static_cast<std::uint32_t>(word_pair >> 32);
   };
-  // Draws the partners of positions top, top - 1, ..., top - count + 1 into `partner`.
-  const auto draw = [&](std::size_t top, std::size_t count, std::uint32_t* partner) {
+  // Draws j for i = first, first + 1, ..., first + count - 1 into `partner`.
+  const auto draw = [&](std::size_t first, std::size_t count, std::uint32_t* partner) {
     for (std::size_t b = 0; b < count; ++b) {
-      const auto bound = static_cast<std::uint32_t>(top - b + 1);
+      const auto bound = static_cast<std::uint32_t>(first + b + 1);
       std::uint64_t product = std::uint64_t{next_word()} * bound;
       if (static_cast<std::uint32_t>(product) < bound) {
         const std::uint32_t threshold = (0u - bound) % bound;
@@ -51,19 +53,36 @@ void shuffle_strata(std::span<std::uint32_t> stratum, Mt19937_64Block& random) {
       __builtin_prefetch(values + partner[b], 1);
     }
   };
-  std::size_t i = stratum.size() - 1;
-  std::size_t count = std::min(batch, i);
+  values[0] = source(0);
+  std::size_t i = 1;
+  std::size_t count = std::min(batch, n - i);
   int current = 0;
   draw(i, count, partners[current]);
-  while (i > 0) {
-    const std::size_t next_top = i - count;
-    const std::size_t next_count = std::min(batch, next_top);
-    draw(next_top, next_count, partners[1 - current]);
-    for (std::size_t b = 0; b < count; ++b) std::swap(values[i - b], values[partners[current][b]]);
-    i = next_top;
+  while (i < n) {
+    const std::size_t next_first = i + count;
+    const std::size_t next_count = std::min(batch, n - next_first);
+    draw(next_first, next_count, partners[1 - current]);
+    for (std::size_t b = 0; b < count; ++b) {
+      const std::uint32_t j = partners[current][b];
+      if (j != i + b) values[i + b] = values[j];
+      values[j] = source(i + b);
+    }
+    i = next_first;
     count = next_count;
     current = 1 - current;
   }
+}
+
+}  // namespace
+
+GROWTHUQ_AVX2_CLONE
+void shuffled_copy(std::span<const double> source, std::span<double> out, Mt19937_64Block& random) {
+  inside_out_shuffle([&](std::size_t i) { return source[i]; }, out, random);
+}
+
+GROWTHUQ_AVX2_CLONE
+void shuffle_strata(std::span<std::uint32_t> sample_of_stratum, Mt19937_64Block& random) {
+  inside_out_shuffle([](std::size_t i) { return static_cast<std::uint32_t>(i); }, sample_of_stratum, random);
 }
 
 GROWTHUQ_AVX2_CLONE
@@ -113,9 +132,11 @@ LatinColumn latin_hypercube_column(std::size_t n, std::uint64_t key, StratumPosi
     throw std::invalid_argument("latin_hypercube_column: n must be in [1, 2^32 - 1]");
   }
   detail::Mt19937_64Block random(key);
+  std::vector<std::uint32_t> sample_of_stratum(n);
+  detail::shuffle_strata(sample_of_stratum, random);
   LatinColumn column;
   column.stratum.resize(n);
-  detail::shuffle_strata(column.stratum, random);
+  for (std::size_t k = 0; k < n; ++k) column.stratum[sample_of_stratum[k]] = static_cast<std::uint32_t>(k);
   column.u_by_stratum.resize(n);
   detail::stratum_points(random, n, 0, column.u_by_stratum, position);
   return column;

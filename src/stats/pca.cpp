@@ -40,6 +40,14 @@ PcaResult correlation_pca(const Eigen::MatrixXd& data) {
                                                          1.0 / static_cast<double>(n - 1));
   correlation = correlation.selfadjointView<Eigen::Lower>();
 
+  return pca_of_correlation(correlation);
+}
+
+PcaResult pca_of_correlation(const Eigen::MatrixXd& correlation) {
+  const Eigen::Index m = correlation.rows();
+  if (m < 1 || correlation.cols() != m || !correlation.allFinite()) {
+    throw std::invalid_argument("pca_of_correlation: needs a finite square matrix of at least 1 x 1");
+  }
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(correlation);
   if (solver.info() != Eigen::Success) throw std::runtime_error("correlation_pca: eigen-decomposition failed");
 

@@ -20,15 +20,7 @@ double binomial_half_cdf(std::size_t k, std::size_t n) {
   return gsl_cdf_binomial_P(static_cast<unsigned int>(k), 0.5, static_cast<unsigned int>(n));
 }
 
-// sorted_quantile's rule (numpy's "linear") reading only x[floor h] and x[floor h + 1], which
-// must hold those order statistics. Same arithmetic as sorted_quantile, so results are equal.
-double quantile_of_selected(const std::vector<double>& x, double level) {
-  const double h = static_cast<double>(x.size() - 1) * level;
-  const double floor_h = std::floor(h);
-  const auto below = static_cast<std::size_t>(floor_h);
-  if (below + 1 >= x.size()) return x[below];
-  return x[below] + (h - floor_h) * (x[below + 1] - x[below]);
-}
+constexpr double summary_levels[] = {0.10, 0.25, 0.50, 0.75, 0.90};
 
 }  // namespace
 
@@ -64,6 +56,82 @@ bool counts_in_summary(std::string_view quantity, SampleStatus status) {
   return status == SampleStatus::ok || (quantity == "v" && status == SampleStatus::no_growth);
 }
 
+std::vector<std::size_t> summary_positions(std::size_t n) {
+  std::vector<std::size_t> positions;
+  if (n == 0) return positions;
+  const MedianConfidenceRanks ranks = median_confidence_ranks(n, 0.95);
+  positions = {ranks.lower - 1, ranks.upper - 1};
+  for (const double level : summary_levels) {
+    const auto below = static_cast<std::size_t>(std::floor(static_cast<double>(n - 1) * level));
+    positions.push_back(below);
+    if (below + 1 < n) positions.push_back(below + 1);
+  }
+  std::sort(positions.begin(), positions.end());
+  positions.erase(std::unique(positions.begin(), positions.end()), positions.end());
+  return positions;
+}
+
+SampleMoments sample_moments(std::span<const double> values) {
+  // Two passes (mean, then squared deviations) avoid the cancellation of the one-pass formula;
+  // both in the order given (the samples' order), so every caller gets the same bits.
+  SampleMoments moments;
+  moments.count = values.size();
+  if (values.empty()) return moments;
+  double total = 0;
+  for (const double value : values) total += value;
+  moments.mean = total / static_cast<double>(values.size());
+  for (const double value : values) moments.squared_deviations += (value - moments.mean) * (value - moments.mean);
+  return moments;
+}
+
+QuantitySummary summary_from_order(const std::string& line, const ResultColumn& column, std::size_t n_flagged,
+                                   const SampleMoments& moments, std::span<const double> order_statistics) {
+  QuantitySummary summary;
+  summary.line = line;
+  summary.quantity = column.quantity;
+  summary.unit = column.unit != nullptr ? std::string(column.unit->symbol) : std::string();
+  const std::size_t n = moments.count;
+  summary.n = n;
+  summary.n_flagged = n_flagged;
+  if (n == 0) {
+    summary.median = summary.q1 = summary.q3 = summary.iqr = summary.p10 = summary.p90 = not_a_number;
+    summary.mean = summary.sd = summary.median_ci_low = summary.median_ci_high = not_a_number;
+    return summary;
+  }
+  const std::vector<std::size_t> positions = summary_positions(n);
+  if (order_statistics.size() != positions.size()) {
+    throw std::invalid_argument("summary_from_order: expected the order statistics of summary_positions");
+  }
+  const auto at = [&](std::size_t position) {
+    return order_statistics[static_cast<std::size_t>(std::lower_bound(positions.begin(), positions.end(), position) -
+                                                     positions.begin())];
+  };
+  // sorted_quantile's rule (numpy's "linear"), reading only x[floor h] and x[floor h + 1].
+  const auto quantile = [&](double level) {
+    const double h = static_cast<double>(n - 1) * level;
+    const double floor_h = std::floor(h);
+    const auto below = static_cast<std::size_t>(floor_h);
+    if (below + 1 >= n) return at(below);
+    return at(below) + (h - floor_h) * (at(below + 1) - at(below));
+  };
+  summary.median = quantile(0.50);
+  summary.q1 = quantile(0.25);
+  summary.q3 = quantile(0.75);
+  summary.iqr = summary.q3 - summary.q1;
+  summary.p10 = quantile(0.10);
+  summary.p90 = quantile(0.90);
+  summary.mean = moments.mean;
+  summary.sd = n > 1 ? std::sqrt(moments.squared_deviations / static_cast<double>(n - 1)) : not_a_number;
+  const MedianConfidenceRanks ranks = median_confidence_ranks(n, 0.95);
+  if (ranks.reached) {
+    summary.median_ci_low = at(ranks.lower - 1);
+    summary.median_ci_high = at(ranks.upper - 1);
+  } else {
+    summary.median_ci_low = summary.median_ci_high = not_a_number;
+  }
+  return summary;
+}
+
 QuantitySummary summarize_quantity(const std::string& line, const ResultColumn& column,
                                    std::span<const SampleStatus> status) {
   if (status.size() != column.values.size()) {
@@ -71,74 +139,26 @@ QuantitySummary summarize_quantity(const std::string& line, const ResultColumn& 
                                 std::to_string(column.values.size()) + " values but " +
                                 std::to_string(status.size()) + " statuses");
   }
-  QuantitySummary summary;
-  summary.line = line;
-  summary.quantity = column.quantity;
-  summary.unit = column.unit != nullptr ? std::string(column.unit->symbol) : std::string();
-
   std::vector<double> values;
   values.reserve(column.values.size());
   for (std::size_t i = 0; i < column.values.size(); ++i) {
     const double value = column.values[i];
     if (counts_in_summary(column.quantity, status[i]) && std::isfinite(value)) values.push_back(value);
   }
-  summary.n = values.size();
-  summary.n_flagged = column.values.size() - values.size();
-  if (values.empty()) {
-    summary.median = summary.q1 = summary.q3 = summary.iqr = summary.p10 = summary.p90 = not_a_number;
-    summary.mean = summary.sd = summary.median_ci_low = summary.median_ci_high = not_a_number;
-    return summary;
-  }
+  const SampleMoments moments = sample_moments(values);
   // Only a few order statistics are needed: select them (std::nth_element, linear time) in
   // ascending order, each within what is left above the previous one, instead of sorting all n
-  // (a sort of 1e6 doubles costs ~4x as much). Quantiles then follow sorted_quantile's rule.
-  const std::size_t n = values.size();
-  const MedianConfidenceRanks ranks = median_confidence_ranks(n, 0.95);
-  const double levels[] = {0.10, 0.25, 0.50, 0.75, 0.90};
-  std::vector<std::size_t> positions{ranks.lower - 1, ranks.upper - 1};
-  for (const double level : levels) {
-    const auto below = static_cast<std::size_t>(std::floor(static_cast<double>(n - 1) * level));
-    positions.push_back(below);
-    if (below + 1 < n) positions.push_back(below + 1);
-  }
-  std::sort(positions.begin(), positions.end());
-  positions.erase(std::unique(positions.begin(), positions.end()), positions.end());
+  // (a sort of 1e6 doubles costs ~4x as much).
+  const std::vector<std::size_t> positions = summary_positions(values.size());
+  std::vector<double> order_statistics;
   std::size_t start = 0;
   for (const std::size_t position : positions) {
     std::nth_element(values.begin() + static_cast<std::ptrdiff_t>(start),
                      values.begin() + static_cast<std::ptrdiff_t>(position), values.end());
+    order_statistics.push_back(values[position]);
     start = position + 1;
   }
-  // values[position] now holds order statistic position + 1 for every selected position, which is
-  // all sorted_quantile reads (floor(h) and floor(h) + 1).
-  const auto quantile = [&](double level) { return quantile_of_selected(values, level); };
-  summary.median = quantile(0.50);
-  summary.q1 = quantile(0.25);
-  summary.q3 = quantile(0.75);
-  summary.iqr = summary.q3 - summary.q1;
-  summary.p10 = quantile(0.10);
-  summary.p90 = quantile(0.90);
-
-  // Two passes (mean, then squared deviations) avoid the cancellation of the one-pass formula.
-  const double count = static_cast<double>(n);
-  double total = 0;
-  for (const double value : values) total += value;
-  summary.mean = total / count;
-  if (n > 1) {
-    double squares = 0;
-    for (const double value : values) squares += (value - summary.mean) * (value - summary.mean);
-    summary.sd = std::sqrt(squares / (count - 1));
-  } else {
-    summary.sd = not_a_number;
-  }
-
-  if (ranks.reached) {
-    summary.median_ci_low = values[ranks.lower - 1];
-    summary.median_ci_high = values[ranks.upper - 1];
-  } else {
-    summary.median_ci_low = summary.median_ci_high = not_a_number;
-  }
-  return summary;
+  return summary_from_order(line, column, column.values.size() - values.size(), moments, order_statistics);
 }
 
 }  // namespace growthuq

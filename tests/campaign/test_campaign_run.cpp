@@ -316,3 +316,55 @@ TEST_CASE("physics correlation seeds differ per line and follow the documented s
   CHECK(physics_correlation_seed(11, "wild_type") != physics_correlation_seed(11, "pme48"));
   CHECK(physics_correlation_seed(11, "wild_type") != physics_correlation_seed(12, "wild_type"));
 }
+
+TEST_CASE("the statistics the processes compute column by column equal those of the whole result in one place") {
+  // run_campaign_lines shares the statistics out by column (inputs ranked by their design
+  // strata, outputs sorted, summaries from the same sort); line_statistics computes them from
+  // the assembled LineResult alone (summarize_quantity, analyze_line). The small campaign has
+  // no_growth samples (v = 0), so v's summary takes summarize_quantity's own path.
+  Campaign campaign = read_campaign(data_dir + "/small_campaign.ini");
+  campaign.samples = 3000;
+  const PreparedCampaign prepared(std::move(campaign));
+
+  struct Checker final : RunObserver {
+    const std::vector<std::string>* outputs = nullptr;
+    int lines = 0;
+    void line_started(const PreparedLine&, std::size_t) override {}
+    void chunk_done(ChunkRange) override {}
+    void line_done(const LineResult&, const std::vector<std::string>&) override { FAIL("line_analyzed is what the run calls"); }
+    void line_analyzed(LineResult&& result, LineStatistics&& statistics, const std::vector<std::string>&) override {
+      ++lines;
+      const LineStatistics expected = line_statistics(result, *outputs);
+      REQUIRE(statistics.summaries.size() == expected.summaries.size());
+      const auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+      for (std::size_t s = 0; s < expected.summaries.size(); ++s) {
+        const QuantitySummary& got = statistics.summaries[s];
+        const QuantitySummary& want = expected.summaries[s];
+        CAPTURE(want.quantity);
+        CHECK(got.line == want.line);
+        CHECK(got.quantity == want.quantity);
+        CHECK(got.unit == want.unit);
+        CHECK(got.n == want.n);
+        CHECK(got.n_flagged == want.n_flagged);
+        for (const auto member : {&QuantitySummary::median, &QuantitySummary::q1, &QuantitySummary::q3, &QuantitySummary::iqr,
+                                  &QuantitySummary::p10, &QuantitySummary::p90, &QuantitySummary::mean, &QuantitySummary::sd,
+                                  &QuantitySummary::median_ci_low, &QuantitySummary::median_ci_high}) {
+          CHECK(same(got.*member, want.*member));
+        }
+      }
+      const LineAnalysis& got = statistics.analysis;
+      const LineAnalysis& want = expected.analysis;
+      CHECK(got.inputs == want.inputs);
+      CHECK(got.outputs == want.outputs);
+      CHECK(got.notes == want.notes);
+      CHECK(got.samples_used == want.samples_used);
+      CHECK(got.input_output_spearman == want.input_output_spearman);
+      CHECK(got.explained_variance_ratio == want.explained_variance_ratio);
+      CHECK(got.loadings == want.loadings);
+    }
+  } checker;
+  checker.outputs = &prepared.campaign().outputs;
+  const std::unique_ptr<Pool> pool = make_serial_pool();
+  run_campaign_lines(prepared, *pool, checker);
+  CHECK(checker.lines == 2);
+}

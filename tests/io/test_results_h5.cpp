@@ -41,7 +41,7 @@ ResultColumn column_of(const char* quantity, const char* unit, bool is_input, st
   column.quantity = quantity;
   column.unit = &find_unit(unit, "test", "unit");
   column.is_input = is_input;
-  column.values = std::move(values);
+  column.values.assign(values.begin(), values.end());
   return column;
 }
 
@@ -207,7 +207,7 @@ void check_line(const H5::H5File& file, const LineResult& line) {
   CHECK(read_scalar<std::uint64_t>(group, "samples", H5::PredType::NATIVE_UINT64) == line.samples());
   for (const ResultColumn& column : line.columns) {
     const H5::DataSet dataset = group.openDataSet(column.column_name());
-    check_same(read_doubles(dataset), column.values);
+    check_same(read_doubles(dataset), {column.values.begin(), column.values.end()});
     CHECK(read_string(dataset, "quantity") == column.quantity);
     CHECK(read_string(dataset, "unit") == column.unit->symbol);
     CHECK(read_string(dataset, "role") == (column.is_input ? "input" : "output"));

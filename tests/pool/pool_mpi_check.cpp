@@ -111,6 +111,26 @@ int main() {
   }
 
   check(pool->broadcast(rank == 0 ? "campaign text" : "") == "campaign text", "broadcast", rank);
+
+  // broadcast_bytes from every root: each process ends with the root's numbers, bit for bit.
+  for (int root = 0; root < pool->size(); ++root) {
+    std::vector<double> numbers;
+    if (rank == root) numbers = compute({0, 3000});
+    pool->broadcast_vector(numbers, 3000, root);
+    check(numbers == compute({0, 3000}), "broadcast_bytes from rank " + std::to_string(root), rank);
+  }
+  // gather: rank 0 gets every process's numbers in rank order, the others nothing.
+  std::vector<double> mine(static_cast<std::size_t>(rank) * 1000 + 1, static_cast<double>(rank) + 0.5);
+  const std::vector<std::vector<double>> gathered = pool->gather(mine);
+  if (rank == 0) {
+    check(gathered.size() == static_cast<std::size_t>(pool->size()), "gather: one contribution per process", rank);
+    for (std::size_t r = 0; r < gathered.size(); ++r) {
+      check(gathered[r] == std::vector<double>(r * 1000 + 1, static_cast<double>(r) + 0.5), "gather from rank " + std::to_string(r), rank);
+    }
+  } else {
+    check(gathered.empty(), "gather: nothing on a process other than 0", rank);
+  }
+
   if (failures == 0 && rank == 0) std::printf("pool check passed on %d process(es)\n", pool->size());
   return failures == 0 ? 0 : 1;
 }

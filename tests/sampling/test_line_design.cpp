@@ -3,6 +3,10 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <future>
+#include <memory>
+#include <span>
+#include <thread>
 #include <vector>
 
 #include "growthuq/core/error.hpp"
@@ -23,9 +27,10 @@ std::vector<DesignVariable> wild_type_variables() {
           {"d0", Lognormal::from_median_iqr(5.35, 1.15)}};
 }
 
-std::vector<double> sorted(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values;
+std::vector<double> sorted(std::span<const double> values) {
+  std::vector<double> copy(values.begin(), values.end());
+  std::sort(copy.begin(), copy.end());
+  return copy;
 }
 
 }  // namespace
@@ -58,7 +63,7 @@ TEST_CASE("a value is the marginal's quantile at its stratum's point") {
   for (std::size_t i = 0; i < 257; ++i) {
     REQUIRE(design.values[1][i] == quantile(variables[1].distribution, column.u_by_stratum[column.stratum[i]]));
   }
-  CHECK(design.ranks[1] == column.stratum);
+  CHECK(std::ranges::equal(design.ranks[1], column.stratum));
   CHECK_FALSE(design.correlation.imposed);
 }
 
@@ -92,4 +97,91 @@ TEST_CASE("too few samples for the correlation: a warning, an uncorrelated desig
   CHECK_FALSE(design.correlation.imposed);
   REQUIRE(design.warnings.size() == 1);
   CHECK(design.warnings[0].find("cannot be imposed on 4 samples") != std::string::npos);
+}
+
+TEST_CASE("a correlated design is Iman-Conover on its columns' permutations, rows in variable 0's stratum order") {
+  // The fused design (line_design.cpp) against the documented steps done one by one: each
+  // column's Latin hypercube (latin_hypercube_column), the score rows held in the order of
+  // variable 0's strata (row r = the sample holding stratum r of variable 0), the public
+  // iman_conover on those rows, and each value looked up from its final stratum. Exact equality:
+  // both sum the same products in the same order.
+  Eigen::MatrixXd s(4, 4);
+  s << 1, 0.25, 0.55, 0.3, 0.25, 1, -0.1, 0.05, 0.55, -0.1, 1, 0.7, 0.3, 0.05, 0.7, 1;
+  const ImanConoverTarget target = make_iman_conover_target(s, {"k", "h", "d", "d0"}, "test");
+  const auto variables = wild_type_variables();
+  for (const std::size_t n : {std::size_t{50}, std::size_t{1000}, std::size_t{4099}, std::size_t{100003}}) {
+    CAPTURE(n);
+    SamplingOptions options;
+    options.samples = n;
+    options.seed = 31;
+    const LineDesign design = latin_hypercube_design("wild_type", variables, options, &target);
+    REQUIRE(design.correlation.imposed);
+    std::vector<LatinColumn> columns;
+    std::vector<std::vector<std::uint32_t>> sample_of_stratum;
+    for (const DesignVariable& variable : variables) {
+      columns.push_back(latin_hypercube_column(n, stream_key(31, "wild_type", variable.name), StratumPosition::random));
+      sample_of_stratum.emplace_back(n);
+      for (std::size_t i = 0; i < n; ++i) sample_of_stratum.back()[columns.back().stratum[i]] = static_cast<std::uint32_t>(i);
+    }
+    // Row r: variable 0 in stratum r, variable j >= 1 in stratum sample_of_stratum[j][r] (its
+    // shuffle applied to the rows).
+    std::vector<std::vector<std::uint32_t>> rows(4, std::vector<std::uint32_t>(n));
+    for (std::size_t r = 0; r < n; ++r) {
+      rows[0][r] = static_cast<std::uint32_t>(r);
+      for (std::size_t j = 1; j < 4; ++j) rows[j][r] = sample_of_stratum[j][r];
+    }
+    REQUIRE(iman_conover(rows, target.normal_correlation).imposed);
+    for (std::size_t j = 0; j < 4; ++j) {
+      for (std::size_t r = 0; r < n; ++r) {
+        const std::uint32_t sample = sample_of_stratum[0][r];
+        REQUIRE(design.ranks[j][sample] == rows[j][r]);
+        REQUIRE(design.values[j][sample] == quantile(variables[j].distribution, columns[j].u_by_stratum[rows[j][r]]));
+      }
+    }
+  }
+}
+
+TEST_CASE("processes sharing a design's preparation get the design of one process") {
+  // Two designers on two threads stand for two processes: each shuffles the score columns of the
+  // variables it computes and hands them to the other through SharedPreparation::share; every
+  // column, computed by the one that shuffled it, equals the column of a designer alone.
+  Eigen::MatrixXd s(4, 4);
+  s << 1, 0.25, 0.55, 0.3, 0.25, 1, -0.1, 0.05, 0.55, -0.1, 1, 0.7, 0.3, 0.05, 0.7, 1;
+  const ImanConoverTarget target = make_iman_conover_target(s, {"k", "h", "d", "d0"}, "test");
+  SamplingOptions options;
+  options.samples = 20011;
+  options.seed = 5;
+  const LineDesigner alone("wild_type", wild_type_variables(), options, &target);
+  REQUIRE(alone.outline().correlation.imposed);
+
+  const std::vector<int> owner{0, 1, 0, 1};  // who computes (and shuffles) each column
+  std::vector<std::promise<std::vector<double>>> published(4);
+  std::vector<std::shared_future<std::vector<double>>> received;
+  for (auto& promise : published) received.push_back(promise.get_future().share());
+  const auto designer_of = [&](int process) {
+    LineDesigner::SharedPreparation shared;
+    for (const int o : owner) shared.shuffles_here.push_back(o == process ? 1 : 0);
+    shared.share = [&, process](std::size_t j, std::span<double> scores) {
+      if (owner[j] == process) {
+        published[j].set_value(std::vector<double>(scores.begin(), scores.end()));
+      } else {
+        const std::vector<double>& theirs = received[j].get();
+        std::copy(theirs.begin(), theirs.end(), scores.begin());
+      }
+    };
+    return std::make_unique<LineDesigner>("wild_type", wild_type_variables(), options, &target, &shared);
+  };
+  std::unique_ptr<LineDesigner> other;
+  std::thread second([&] { other = designer_of(1); });
+  const std::unique_ptr<LineDesigner> first = designer_of(0);
+  second.join();
+  for (std::size_t j = 0; j < 4; ++j) {
+    CAPTURE(j);
+    LargeVector<std::uint32_t> expected_ranks, ranks;
+    LargeVector<double> expected_values, values;
+    alone.compute_column(j, expected_ranks, expected_values);
+    (owner[j] == 0 ? *first : *other).compute_column(j, ranks, values);
+    CHECK(ranks == expected_ranks);
+    CHECK(values == expected_values);
+  }
 }

@@ -19,11 +19,10 @@ using namespace growthuq;
 
 namespace {
 
-// Fisher-Yates from the last position down with 32-bit Lemire draws, high half of each 64-bit
-// draw first: the scheme of latin_hypercube.hpp, one draw at a time.
+// The inside-out Fisher-Yates with 32-bit Lemire draws, high half of each 64-bit draw first:
+// the scheme of latin_column.hpp, one draw at a time.
 std::vector<std::uint32_t> reference_permutation(std::size_t n, std::mt19937_64& engine) {
   std::vector<std::uint32_t> values(n);
-  std::iota(values.begin(), values.end(), std::uint32_t{0});
   std::uint64_t pair = 0;
   bool has_low = false;
   const auto word = [&]() -> std::uint32_t {
@@ -35,12 +34,15 @@ std::vector<std::uint32_t> reference_permutation(std::size_t n, std::mt19937_64&
     has_low = true;
     return static_cast<std::uint32_t>(pair >> 32);
   };
-  for (std::size_t i = n - 1; i > 0; --i) {
+  values[0] = 0;
+  for (std::size_t i = 1; i < n; ++i) {
     const auto bound = static_cast<std::uint32_t>(i + 1);
     const std::uint32_t threshold = (0u - bound) % bound;
     std::uint64_t product = std::uint64_t{word()} * bound;
     while (static_cast<std::uint32_t>(product) < threshold) product = std::uint64_t{word()} * bound;
-    std::swap(values[i], values[product >> 32]);
+    const auto j = static_cast<std::size_t>(product >> 32);
+    values[i] = values[j];
+    values[j] = static_cast<std::uint32_t>(i);
   }
   return values;
 }
@@ -80,7 +82,7 @@ TEST_CASE("the block Mersenne Twister is std::mt19937_64") {
   }
 }
 
-TEST_CASE("the batched shuffle is the documented Fisher-Yates, draw for draw") {
+TEST_CASE("the batched shuffle is the documented inside-out Fisher-Yates, draw for draw") {
   for (const std::size_t n : {std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{64}, std::size_t{65},
                               std::size_t{1000}, std::size_t{100003}}) {
     const std::uint64_t key = stream_key(7, "line", std::to_string(n));
@@ -92,6 +94,12 @@ TEST_CASE("the batched shuffle is the documented Fisher-Yates, draw for draw") {
     REQUIRE(stratum == expected);
     // the points then start from a fresh draw (a leftover low half is discarded)
     CHECK(block() == engine());
+    // any array is moved exactly like 0, 1, ..., n-1
+    std::vector<double> source(n), shuffled(n);
+    for (std::size_t i = 0; i < n; ++i) source[i] = 0.5 * static_cast<double>(i) - 3.0;
+    detail::Mt19937_64Block again(key);
+    detail::shuffled_copy(source, shuffled, again);
+    for (std::size_t r = 0; r < n; ++r) REQUIRE(shuffled[r] == source[expected[r]]);
   }
 }
 

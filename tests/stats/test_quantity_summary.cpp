@@ -23,7 +23,7 @@ ResultColumn column_of(const char* quantity, const char* unit, std::vector<doubl
   ResultColumn column;
   column.quantity = quantity;
   column.unit = &find_unit(unit, "test", "unit");
-  column.values = std::move(values);
+  column.values.assign(values.begin(), values.end());
   return column;
 }
 
@@ -190,7 +190,7 @@ TEST_CASE("selected order statistics equal those of a full sort") {
     CHECK(s.median == reference.median);
     CHECK(s.q3 == reference.q3);
     CHECK(s.p90 == reference.p90);
-    std::vector<double> sorted = column.values;
+    std::vector<double> sorted(column.values.begin(), column.values.end());
     std::sort(sorted.begin(), sorted.end());
     const MedianConfidenceRanks ranks = median_confidence_ranks(n);
     if (ranks.reached) {

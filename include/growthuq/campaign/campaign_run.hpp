@@ -1,7 +1,10 @@
-// The run of a campaign over its plant lines: every line's design is built identically on
-// every process, its samples are evaluated through the Pool in chunks, and the coordinating
-// process assembles one line at a time (LineResult) and hands it to an observer, which writes
-// it. kappa is calibrated on the reference line and applied to every line (PHYSICS.md sec. 6).
+// The run of a campaign over its plant lines, all processes sharing every step: a line's design
+// is computed column by column (each process some columns, then every process gets them all),
+// its samples are evaluated through the Pool in chunks, and its statistics (summaries, rank
+// correlations, principal components) column by column again; the coordinating process
+// assembles one line at a time (LineResult, LineStatistics) and hands it to an observer, which
+// writes it. kappa is calibrated on the reference line and applied to every line (PHYSICS.md
+// sec. 6).
 #pragma once
 
 #include <cstddef>
@@ -25,6 +28,7 @@
 #include "growthuq/pool/pool.hpp"
 #include "growthuq/rawdata/raw_line_fit.hpp"
 #include "growthuq/sampling/line_design.hpp"
+#include "growthuq/stats/line_analysis.hpp"
 
 namespace growthuq {
 
@@ -70,6 +74,12 @@ class PreparedCampaign {
   // The line's design (identical on every process for the same campaign and seed).
   LineDesign design(const PreparedLine& line) const;
 
+  // The same design computed by all processes of `pool` together (each computes some columns
+  // and receives the others); every process calls it and gets the whole design. `meanwhile`
+  // (optional) runs once the part every process must do first is done, before this process's
+  // columns: other work of the process's own, which the others need not wait for.
+  LineDesign design(const PreparedLine& line, Pool& pool, const std::function<void()>& meanwhile = nullptr) const;
+
   // The chunk's computed outputs (SI), output after output, then each sample's status as a
   // double: (computed_outputs().size() + 1) * (range.end - range.begin) values.
   std::vector<double> evaluate_chunk(const PreparedLine& line, const LineDesign& design, ChunkRange range) const;
@@ -90,6 +100,17 @@ class PreparedCampaign {
 // "physics_correlation") (random_stream.hpp), so each line draws its own tubes reproducibly.
 std::uint64_t physics_correlation_seed(std::uint64_t campaign_seed, std::string_view line);
 
+// A finished line's statistics: the rows of summary.csv (one per campaign output the line has,
+// in the campaign's order) and the analyses (input x output rank correlation, PCA).
+struct LineStatistics {
+  std::vector<QuantitySummary> summaries;
+  LineAnalysis analysis;
+};
+
+// The statistics of `result` computed by this process alone (the same numbers the run computes
+// with all processes): summarize_quantity of each of `outputs` the result has, and analyze_line.
+LineStatistics line_statistics(const LineResult& result, const std::vector<std::string>& outputs);
+
 // Receives the run's events on the coordinating process.
 class RunObserver {
  public:
@@ -98,6 +119,23 @@ class RunObserver {
   virtual void chunk_done(ChunkRange range) = 0;
   // The finished line, v already scaled by the campaign's kappa; `warnings` from its design.
   virtual void line_done(const LineResult& result, const std::vector<std::string>& warnings) = 0;
+  // What the run calls: the finished line with its statistics, which all processes computed
+  // together; the observer may keep both (move from them). By default: line_done(result,
+  // warnings).
+  virtual void line_analyzed(LineResult&& result, LineStatistics&& statistics, const std::vector<std::string>& warnings) {
+    (void)statistics;
+    line_done(result, warnings);
+  }
+};
+
+// Wall time this process spent in each part of a run, in seconds (growthuq run prints them when
+// the environment variable GROWTHUQ_TIMINGS is set).
+struct RunTimings {
+  double design = 0;      // building the designs (its share of the columns, then receiving the rest)
+  double evaluation = 0;  // the models, in chunks through the pool
+  double sharing = 0;     // sending the evaluated outputs to every process
+  double statistics = 0;  // summaries, ranks and correlation matrices
+  double observer = 0;    // the observer's line_analyzed (writing, on the coordinator)
 };
 
 // Keeps finished chunks beyond the process (checkpoint.hpp): a chunk the journal holds is not
@@ -118,6 +156,7 @@ class ChunkJournal {
 struct RunOutcome {
   double kappa = 1.0;       // the calibrated kappa on the coordinator; 1 elsewhere and without v
   bool calibrated = false;  // v was an output and kappa was calibrated on the reference line
+  RunTimings timings;
 };
 
 // Runs every line through `pool` (all processes call it; `observer` is used on rank 0 only).

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "growthuq/core/large_vector.hpp"
 #include "growthuq/core/units.hpp"
 #include "growthuq/evaluation/sample_status.hpp"
 
@@ -21,7 +22,7 @@ struct ResultColumn {
   std::string quantity;        // "k", "p", ...
   const Unit* unit = nullptr;  // never null
   bool is_input = false;
-  std::vector<double> values;
+  LargeVector<double> values;  // a std::vector whose storage is reused from line to line (large_vector.hpp)
 
   std::string column_name() const { return growthuq::column_name(quantity, *unit); }
 };

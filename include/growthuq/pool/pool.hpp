@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <span>
@@ -78,6 +79,26 @@ class Pool {
   // Sends `text` from rank 0 to every process (campaign text, so all ranks validate the same
   // input); returns it on every rank.
   virtual std::string broadcast(const std::string& text) = 0;
+
+  // Copies `data` of process `root` into `data` of every other process (work one process did
+  // that all need, such as a design column). Every process calls it with the same root and
+  // size. Serially, root must be 0 and nothing happens.
+  virtual void broadcast_bytes(std::span<std::byte> data, int root) = 0;
+
+  // Collects what every process contributes on the coordinator: rank 0 gets all contributions
+  // in rank order (its own first), the others an empty vector at once (their numbers go out in
+  // the background, so that they need not wait for rank 0). Every process calls it, the same
+  // number of times in the same order, but not necessarily at the same moment. For work shared
+  // out in advance (each process knows its part), where the dynamic run() would make the
+  // coordinator both compute and serve.
+  virtual std::vector<std::vector<double>> gather(std::vector<double> values) = 0;
+
+  // broadcast_bytes for a contiguous vector of numbers, resized to `size` first.
+  template <class Vector>
+  void broadcast_vector(Vector& values, std::size_t size, int root) {
+    values.resize(size);
+    broadcast_bytes(std::as_writable_bytes(std::span(values.data(), size)), root);
+  }
 
  protected:
   int stop_requested() const { return stop_request_ ? stop_request_() : 0; }

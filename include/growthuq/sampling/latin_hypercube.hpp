@@ -27,11 +27,13 @@ struct LatinColumn {
 double stratum_edge(std::size_t k, std::size_t n) noexcept;
 
 // The column for n >= 1 samples (n < 2^32) from RandomStream(key) (see random_stream.hpp):
-// first the permutation, Fisher-Yates from the last position down (i = n-1 .. 1: swap i with
-// j uniform in [0, i], by Lemire's method on 32-bit words, each 64-bit draw giving its high
-// then its low half); then, for StratumPosition::random, one open uniform U_k per stratum from
-// fresh 64-bit draws, in increasing k, u_k = (k + U_k)/n (kept inside its stratum and inside
-// (0,1) against rounding).
+// first the permutation: 0, 1, ..., n-1 shuffled by Fisher-Yates from the last position down
+// (i = n-1 .. 1: swap i with j uniform in [0, i], by Lemire's method on 32-bit words, each
+// 64-bit draw giving its high then its low half) gives sigma, and stratum k goes to sample
+// sigma[k] (stratum[sigma[k]] = k); then, for StratumPosition::random, one open uniform U_k
+// per stratum from fresh 64-bit draws, in increasing k, u_k = (k + U_k)/n (kept inside its
+// stratum and inside (0,1) against rounding). Handing strata to samples (rather than samples
+// to strata) lets a design compute values in stratum order and write each one once.
 LatinColumn latin_hypercube_column(std::size_t n, std::uint64_t key, StratumPosition position);
 
 }  // namespace growthuq

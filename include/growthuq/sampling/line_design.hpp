@@ -5,11 +5,15 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <memory>
+#include <span>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "growthuq/core/large_vector.hpp"
 #include "growthuq/correlation/iman_conover.hpp"
 #include "growthuq/correlation/matrix_file.hpp"
 #include "growthuq/correlation/rank_correlation_target.hpp"
@@ -32,8 +36,12 @@ struct DesignVariable {
 
 struct LineDesign {
   std::vector<std::string> names;
-  std::vector<std::vector<std::uint32_t>> ranks;  // ranks[j][i]: stratum (= 0-based rank) of sample i in variable j
-  std::vector<std::vector<double>> values;        // values[j][i]: quantile of variable j at sample i's point
+  std::vector<LargeVector<std::uint32_t>> ranks;  // ranks[j][i]: stratum (= 0-based rank) of sample i in variable j
+  std::vector<LargeVector<double>> values;        // values[j][i]: quantile of variable j at sample i's point
+  // strictly_increasing[j] != 0: variable j's values strictly increase with the stratum (no two
+  // samples share a value), so its strata are also the exact ranks of its values. (Not so when
+  // a quantile is flat or two strata's points round to one value, e.g. an empirical law.)
+  std::vector<std::uint8_t> strictly_increasing;
   std::optional<ImanConoverTarget> target;        // over `names`, when a correlation was requested
   ImanConoverOutcome correlation;                 // imposed or not, and why not
   std::vector<std::string> warnings;              // for stderr: repaired target, correlation not imposed
@@ -41,13 +49,59 @@ struct LineDesign {
 
 // The design of variables `variables` of line `line_name`: column j comes from the stream
 // stream_key(seed, line_name, variables[j].name) (random_stream.hpp), so it does not depend on
-// the other variables; `target` (over the same variables, in order) reorders the columns.
+// the other variables; `target` (over the same variables, in order) reorders the columns
+// (Iman-Conover; the first column keeps its order, and a variable added at the end leaves the
+// others unchanged).
 LineDesign latin_hypercube_design(std::string_view line_name, const std::vector<DesignVariable>& variables,
                                   const SamplingOptions& options, const ImanConoverTarget* target);
+
+// The same design, a column at a time, so that processes can share the work: the constructor
+// does what every column needs (for a correlated design the shuffled score columns and
+// Iman-Conover's mix, about a fifth of the work) and is the same on every process; then
+// compute_column(j) gives column j from that alone, on any process, in any order.
+class LineDesigner {
+ public:
+  // Processes may share the preparation too: the shuffled score columns of a correlated design
+  // are its largest part. shuffles_here[j] (one per variable; entry 0 is not used) says whether
+  // this process shuffles variable j's scores; once it has shuffled them all, share(j, scores)
+  // is called for every j >= 1 in order, on every process, and must leave in `scores` that
+  // column as the process that shuffled it has it (a broadcast from it). A process can then compute only the columns it
+  // shuffled itself (the rest of their streams are its own), and column 0.
+  struct SharedPreparation {
+    std::vector<std::uint8_t> shuffles_here;
+    std::function<void(std::size_t j, std::span<double> scores)> share;
+  };
+
+  LineDesigner(std::string_view line_name, std::vector<DesignVariable> variables, const SamplingOptions& options,
+               const ImanConoverTarget* target, const SharedPreparation* shared = nullptr);
+  LineDesigner(const LineDesigner&) = delete;
+  LineDesigner& operator=(const LineDesigner&) = delete;
+  ~LineDesigner();
+
+  std::size_t columns() const;
+
+  // The design without its columns: names, target, outcome, warnings; ranks and values hold
+  // columns() empty vectors.
+  const LineDesign& outline() const { return outline_; }
+
+  // Column j (LineDesign::ranks[j] and values[j]); returns LineDesign::strictly_increasing[j].
+  // Thread-safe.
+  bool compute_column(std::size_t j, LargeVector<std::uint32_t>& ranks, LargeVector<double>& values) const;
+
+ private:
+  struct Preparation;
+  std::unique_ptr<Preparation> preparation_;
+  LineDesign outline_;
+};
 
 // The design of a line file's variables. `correlation` may name a subset of them (the others
 // are uncorrelated with everything); a name the line lacks is an InputError naming the file.
 LineDesign sample_line(const LineDistributions& line, const SamplingOptions& options,
                        const RankCorrelationFile* correlation);
+
+// The designer of that design (LineDesigner above), to compute it column by column.
+std::unique_ptr<LineDesigner> line_designer(const LineDistributions& line, const SamplingOptions& options,
+                                            const RankCorrelationFile* correlation,
+                                            const LineDesigner::SharedPreparation* shared = nullptr);
 
 }  // namespace growthuq

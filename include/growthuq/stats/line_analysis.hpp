@@ -4,12 +4,16 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "growthuq/campaign/line_result.hpp"
+#include "growthuq/core/large_vector.hpp"
+#include "growthuq/stats/quantity_summary.hpp"
 
 namespace growthuq {
 
@@ -31,6 +35,34 @@ struct LineAnalysis {
 // The analysis over the samples of `result` with status ok (a no_growth sample is left out
 // here: its v = 0 is a boundary value, not a draw of the continuous law the ranks describe).
 LineAnalysis analyze_line(const LineResult& result);
+
+// analyze_line in two parts, so that processes can share the columns out: one column at a time
+// (its average ranks from one sort, and, on request, order statistics for its summary), then
+// the matrices from all columns. analyze_line(result) is combine_column_analyses of
+// analyze_column of every column over analysis_samples(result.status).
+struct ColumnAnalysis {
+  // Why the column is left out of the matrices (each gets a note), or `used`.
+  enum class Verdict { used, not_finite, constant, spread_out_of_range };
+  Verdict verdict = Verdict::used;
+  SampleMoments moments;                  // of the samples used, summed in sample order
+  LargeVector<std::uint32_t> twice_ranks;  // 2 x average ranks over the samples used (ColumnOrder), when used
+  std::vector<double> order_statistics;    // at the requested positions (when used)
+};
+
+// The samples with status ok, in sample order.
+std::vector<std::uint32_t> analysis_samples(std::span<const SampleStatus> status);
+
+// `values` is a whole column (all samples); `used` from analysis_samples; `positions` are
+// positions of the ascending order of the used values whose values are wanted. When the values
+// are known to strictly increase with `strata` (a design's column whose
+// LineDesign::strictly_increasing is set, and its ranks), the order comes from the strata
+// without sorting; the result is the same.
+ColumnAnalysis analyze_column(std::span<const double> values, std::span<const std::uint32_t> used,
+                              std::span<const std::size_t> positions = {}, std::span<const std::uint32_t> strata = {});
+
+// columns[c] is the analysis of result.columns[c] over `used`.
+LineAnalysis combine_column_analyses(const LineResult& result, std::span<const std::uint32_t> used,
+                                     const std::vector<ColumnAnalysis>& columns);
 
 // Readable text: the input x output Spearman table, the explained variance and loadings of every
 // component (three decimals), and the notes. Ends with a newline.

@@ -25,4 +25,9 @@ struct PcaResult {
 // callers (analyze_line) filter those first and say so.
 PcaResult correlation_pca(const Eigen::MatrixXd& data);
 
+// The same from the correlation matrix itself (symmetric, unit diagonal, finite;
+// std::invalid_argument when not square or not finite), for callers that computed it without
+// holding the data as one matrix.
+PcaResult pca_of_correlation(const Eigen::MatrixXd& correlation);
+
 }  // namespace growthuq

@@ -7,6 +7,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "growthuq/campaign/line_result.hpp"
 #include "growthuq/evaluation/sample_status.hpp"
@@ -42,5 +43,20 @@ bool counts_in_summary(std::string_view quantity, SampleStatus status);
 // status.size() must equal column.values.size() (std::invalid_argument otherwise).
 QuantitySummary summarize_quantity(const std::string& line, const ResultColumn& column,
                                    std::span<const SampleStatus> status);
+
+// The same in two halves, for a caller that has the counted values' order from elsewhere (one
+// sort serving the ranks too): the 0-based positions of the ascending order it reads (sorted,
+// unique), and the summary from the values at those positions plus the counted values' mean
+// and squared deviations, summed in the samples' order (sample_moments) as summarize_quantity
+// does, so both give the same bits. n_flagged = column.values.size() - moments.count.
+struct SampleMoments {
+  std::size_t count = 0;
+  double mean = 0;
+  double squared_deviations = 0;  // sum of (x - mean)^2
+};
+SampleMoments sample_moments(std::span<const double> values);
+std::vector<std::size_t> summary_positions(std::size_t n);
+QuantitySummary summary_from_order(const std::string& line, const ResultColumn& column, std::size_t n_flagged,
+                                   const SampleMoments& moments, std::span<const double> order_statistics);
 
 }  // namespace growthuq
