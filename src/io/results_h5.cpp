@@ -368,18 +368,29 @@ void ResultsH5Writer::write_array(const std::string& path, const std::vector<std
   }
 }
 
+namespace {
+
+// Calls write(object) on the dataset at `path` when there is one, else on the group at `path`
+// (created when missing).
+template <typename Write>
+void write_on_object(H5::H5File& file, const std::string& path, Write write) {
+  const auto [parent, leaf] = split_path(path);
+  H5::Group group = group_at(file, parent);
+  if (!leaf.empty() && group.nameExists(leaf) && group.childObjType(leaf) == H5O_TYPE_DATASET) {
+    H5::DataSet dataset = group.openDataSet(leaf);
+    write(dataset);
+  } else {
+    H5::Group target = group_at(file, path);
+    write(target);
+  }
+}
+
+}  // namespace
+
 void ResultsH5Writer::write_attribute(const std::string& path, const std::string& name, const std::string& value) {
   if (!file_) throw std::logic_error("ResultsH5Writer::write_attribute after finish()");
   try {
-    const auto [parent, leaf] = split_path(path);
-    H5::Group group = group_at(file_->file, parent);
-    if (!leaf.empty() && group.nameExists(leaf) && group.childObjType(leaf) == H5O_TYPE_DATASET) {
-      H5::DataSet dataset = group.openDataSet(leaf);
-      write_string_attribute(dataset, name, value);
-    } else {
-      H5::Group target = group_at(file_->file, path);
-      write_string_attribute(target, name, value);
-    }
+    write_on_object(file_->file, path, [&](H5::H5Object& object) { write_string_attribute(object, name, value); });
   } catch (const H5::Exception& error) {
     rethrow_hdf5(file_->partial, error);
   }
@@ -388,15 +399,7 @@ void ResultsH5Writer::write_attribute(const std::string& path, const std::string
 void ResultsH5Writer::write_attribute(const std::string& path, const std::string& name, double value) {
   if (!file_) throw std::logic_error("ResultsH5Writer::write_attribute after finish()");
   try {
-    const auto [parent, leaf] = split_path(path);
-    H5::Group group = group_at(file_->file, parent);
-    if (!leaf.empty() && group.nameExists(leaf) && group.childObjType(leaf) == H5O_TYPE_DATASET) {
-      H5::DataSet dataset = group.openDataSet(leaf);
-      write_f64_attribute(dataset, name, value);
-    } else {
-      H5::Group target = group_at(file_->file, path);
-      write_f64_attribute(target, name, value);
-    }
+    write_on_object(file_->file, path, [&](H5::H5Object& object) { write_f64_attribute(object, name, value); });
   } catch (const H5::Exception& error) {
     rethrow_hdf5(file_->partial, error);
   }
