@@ -3,63 +3,28 @@
 // thickness, and the errors a user meets (bad campaign, existing output directory).
 #include <doctest/doctest.h>
 
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "growthuq/campaign/campaign_run.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/io/csv.hpp"
+#include "support/cli_run.hpp"
+#include "support/scratch_directory.hpp"
+#include "support/text_file.hpp"
 
 using namespace growthuq;
+using namespace growthuq::testing;
 namespace fs = std::filesystem;
 
 namespace {
 
 const std::string data_dir = std::string(GROWTHUQ_SOURCE_DIR) + "/tests/campaign/data";
-
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// Runs the CLI with `arguments` (shell words), capturing stdout and stderr.
-Outcome run_cli(const std::string& arguments, const fs::path& scratch) {
-  const fs::path out = scratch / "stdout.txt";
-  const fs::path err = scratch / "stderr.txt";
-  const std::string command = std::string(GROWTHUQ_CLI) + " " + arguments + " >" + out.string() + " 2>" + err.string();
-  const int status = std::system(command.c_str());
-  Outcome outcome;
-  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  outcome.out = slurp(out);
-  outcome.err = slurp(err);
-  return outcome;
-}
-
-struct Scratch {
-  fs::path root;
-  explicit Scratch(const std::string& name) : root(fs::temp_directory_path() / ("growthuq_test_run_" + name)) {
-    fs::remove_all(root);
-    fs::create_directories(root);
-  }
-  ~Scratch() { fs::remove_all(root); }
-};
 
 std::size_t count_lines(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
 
@@ -90,9 +55,9 @@ double relative_difference(double a, double b) { return a == b ? 0.0 : std::abs(
 }  // namespace
 
 TEST_CASE("a small campaign end to end: files, columns, summaries from samples.csv, kappa") {
-  const Scratch scratch("small");
+  const ScratchDirectory scratch("run_small");
   const fs::path out = scratch.root / "results";
-  const Outcome run = run_cli("run " + data_dir + "/small_campaign.ini --out " + out.string() + " --formats csv,hdf5", scratch.root);
+  const CliOutcome run = run_cli("run " + data_dir + "/small_campaign.ini --out " + out.string() + " --formats csv,hdf5", scratch.root);
   INFO(run.err);
   REQUIRE(run.exit_code == 0);
   CHECK(fs::is_regular_file(out / "samples.csv"));
@@ -203,9 +168,9 @@ TEST_CASE("a small campaign end to end: files, columns, summaries from samples.c
 }
 
 TEST_CASE("a turgor-only campaign runs on a line without thickness or relaxation data") {
-  const Scratch scratch("turgor");
+  const ScratchDirectory scratch("run_turgor");
   const fs::path out = scratch.root / "results";
-  const Outcome run = run_cli("run " + data_dir + "/turgor_campaign.ini --quiet --out " + out.string(), scratch.root);
+  const CliOutcome run = run_cli("run " + data_dir + "/turgor_campaign.ini --quiet --out " + out.string(), scratch.root);
   INFO(run.err);
   REQUIRE(run.exit_code == 0);
   CHECK(run.err.empty());  // --quiet: no progress
@@ -231,7 +196,7 @@ TEST_CASE("a turgor-only campaign runs on a line without thickness or relaxation
 }
 
 TEST_CASE("a bad campaign is one line on stderr and exit code 2, before any output exists") {
-  const Scratch scratch("bad");
+  const ScratchDirectory scratch("run_bad");
   const fs::path campaign = scratch.root / "bad.ini";
   std::string text = slurp(data_dir + "/small_campaign.ini");
   text.replace(text.find("samples = 200"), 13, "samples = many");
@@ -239,7 +204,7 @@ TEST_CASE("a bad campaign is one line on stderr and exit code 2, before any outp
   text.replace(text.find("../../../distributions"), 22, std::string(GROWTHUQ_SOURCE_DIR) + "/distributions");
   std::ofstream(campaign) << text;
   const fs::path out = scratch.root / "results";
-  Outcome run = run_cli("run " + campaign.string() + " --out " + out.string(), scratch.root);
+  CliOutcome run = run_cli("run " + campaign.string() + " --out " + out.string(), scratch.root);
   CHECK(run.exit_code == 2);
   CHECK(run.err == "growthuq run: error: " + campaign.string() + ":6: samples = 'many': expected a whole number from 1 to 4294967295\n");
   CHECK_FALSE(fs::exists(out));
@@ -281,7 +246,7 @@ TEST_CASE("a bad campaign is one line on stderr and exit code 2, before any outp
 }
 
 TEST_CASE("a run that cannot calibrate kappa stops with one error and leaves no output directory") {
-  const Scratch scratch("kappa");
+  const ScratchDirectory scratch("run_kappa");
   // A yield pressure of 5 MPa is above every sampled turgor: no reference tube grows.
   std::string text = slurp(data_dir + "/small_campaign.ini");
   text.replace(text.find("yield_pressure_MPa = 0.15"), 25, "yield_pressure_MPa = 5");
@@ -289,7 +254,7 @@ TEST_CASE("a run that cannot calibrate kappa stops with one error and leaves no 
   const fs::path campaign = scratch.root / "kappa.ini";
   std::ofstream(campaign) << text;
   const fs::path out = scratch.root / "results";
-  const Outcome run = run_cli("run " + campaign.string() + " --quiet --formats csv,hdf5 --out " + out.string(), scratch.root);
+  const CliOutcome run = run_cli("run " + campaign.string() + " --quiet --formats csv,hdf5 --out " + out.string(), scratch.root);
   CHECK(run.exit_code == 2);
   CHECK(run.err.starts_with("growthuq run: error: reference line 'wild_type': predicted median growth rate (kappa = 1) = 'nan'"));
   CHECK(count_lines(run.err) == 1);
@@ -297,11 +262,11 @@ TEST_CASE("a run that cannot calibrate kappa stops with one error and leaves no 
 }
 
 TEST_CASE("an existing output directory is refused without --force and replaced with it") {
-  const Scratch scratch("exists");
+  const ScratchDirectory scratch("run_exists");
   const fs::path out = scratch.root / "results";
   fs::create_directories(out);
   std::ofstream(out / "results.h5") << "stale";
-  Outcome run = run_cli("run " + data_dir + "/turgor_campaign.ini --quiet --out " + out.string(), scratch.root);
+  CliOutcome run = run_cli("run " + data_dir + "/turgor_campaign.ini --quiet --out " + out.string(), scratch.root);
   CHECK(run.exit_code == 2);
   CHECK(run.err == "growthuq run: error: " + out.string() +
                        ": output directory already exists; choose another (--out DIR) or pass --force to replace its results\n");

@@ -8,10 +8,8 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -20,20 +18,14 @@
 #include "growthuq/rawdata/raw_line_file.hpp"
 #include "growthuq/campaign/chunk_log.hpp"
 #include "growthuq/core/error.hpp"
+#include "support/scratch_directory.hpp"
+#include "support/text_file.hpp"
 
 using namespace growthuq;
+using namespace growthuq::testing;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct Scratch {
-  fs::path root;
-  explicit Scratch(const std::string& name) : root(fs::temp_directory_path() / ("growthuq_test_checkpoint_" + name)) {
-    fs::remove_all(root);
-    fs::create_directories(root);
-  }
-  ~Scratch() { fs::remove_all(root); }
-};
 
 struct Chunk {
   std::uint32_t line;
@@ -87,22 +79,10 @@ void check_records(const std::string& path, const ChunkLogScan& scan, const std:
   }
 }
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-void spit(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-}
-
 }  // namespace
 
 TEST_CASE("chunk log: every record comes back with its line, range and value bits") {
-  Scratch scratch("round_trip");
+  ScratchDirectory scratch("checkpoint_round_trip");
   const std::string path = (scratch.root / "chunks.bin").string();
   const std::vector<Chunk> chunks = sample_chunks();
   write_log(path, chunks);
@@ -116,7 +96,7 @@ TEST_CASE("chunk log: every record comes back with its line, range and value bit
 }
 
 TEST_CASE("chunk log: a torn tail is ignored wherever the write stopped, and cut before appending") {
-  Scratch scratch("torn");
+  ScratchDirectory scratch("checkpoint_torn");
   const std::string path = (scratch.root / "chunks.bin").string();
   const std::vector<Chunk> chunks = sample_chunks();
   write_log(path, chunks);
@@ -145,7 +125,7 @@ TEST_CASE("chunk log: a torn tail is ignored wherever the write stopped, and cut
 }
 
 TEST_CASE("chunk log: a record whose bits changed fails its checksum; reading stops before it") {
-  Scratch scratch("corrupt");
+  ScratchDirectory scratch("checkpoint_corrupt");
   const std::string path = (scratch.root / "chunks.bin").string();
   const std::vector<Chunk> chunks = sample_chunks();
   write_log(path, chunks);
@@ -232,7 +212,7 @@ TEST_CASE("manifest: malformed text is refused naming the file and line") {
 }
 
 TEST_CASE("resuming is refused when an input file changed or vanished, and allowed when restored") {
-  Scratch scratch("fingerprints");
+  ScratchDirectory scratch("checkpoint_fingerprints");
   const fs::path line = scratch.root / "line.ini";
   const fs::path matrix = scratch.root / "matrix.csv";
   const std::string line_text = "[k]\nfamily = lognormal\nmedian = 2.87\n";

@@ -14,7 +14,6 @@
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
@@ -22,23 +21,15 @@
 #include <vector>
 
 #include "growthuq/campaign/chunk_log.hpp"
+#include "support/cli_run.hpp"
+#include "support/scratch_directory.hpp"
+#include "support/text_file.hpp"
 
 using namespace growthuq;
+using namespace growthuq::testing;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-void spit(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-}
 
 std::vector<std::string> split(const std::string& text, char separator) {
   std::vector<std::string> items;
@@ -78,15 +69,9 @@ int wait_for(pid_t pid) {
   return status;
 }
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-Outcome run_in(const fs::path& directory, const std::vector<std::string>& command,
-               const std::vector<std::string>& environment = {}) {
-  const int status = wait_for(start(command, directory, environment));
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(directory / "stdout.txt"), slurp(directory / "stderr.txt")};
+CliOutcome run_in(const fs::path& directory, const std::vector<std::string>& command,
+                  const std::vector<std::string>& environment = {}) {
+  return outcome_in(directory, wait_for(start(command, directory, environment)));
 }
 
 std::vector<std::string> cli(std::vector<std::string> arguments) {
@@ -97,12 +82,12 @@ std::vector<std::string> cli(std::vector<std::string> arguments) {
 // A copy of the small test campaign whose line files are copies too (so a test may change one),
 // run with enough samples and small chunks (37) that a run lasts long enough to be interrupted.
 struct Study {
+  ScratchDirectory scratch;
   fs::path root;
   fs::path campaign;
   std::vector<std::string> run_arguments;
 
-  explicit Study(const std::string& name) : root(fs::temp_directory_path() / ("growthuq_test_resume_" + name)) {
-    fs::remove_all(root);
+  explicit Study(const std::string& name) : scratch("resume_" + name), root(scratch.root) {
     fs::create_directories(root / "lines");
     const std::string source = std::string(GROWTHUQ_SOURCE_DIR);
     for (const char* line : {"wild_type.ini", "pme48.ini"}) fs::copy_file(source + "/distributions/" + line, root / "lines" / line);
@@ -112,7 +97,6 @@ struct Study {
     spit(campaign, text);
     run_arguments = {"run", campaign.string(), "--samples", "100000", "--formats", "csv,hdf5", "--quiet", "--out", "out"};
   }
-  ~Study() { fs::remove_all(root); }
 
   fs::path directory(const std::string& name) const {
     fs::create_directories(root / name);
@@ -123,8 +107,8 @@ struct Study {
 const char* const result_files[] = {"samples.csv", "summary.csv", "results.h5"};
 
 // The uninterrupted run, in its own directory with the same command line (results.h5 stores it).
-Outcome reference_run(const Study& study) {
-  const Outcome outcome = run_in(study.directory("reference"), cli(study.run_arguments));
+CliOutcome reference_run(const Study& study) {
+  const CliOutcome outcome = run_in(study.directory("reference"), cli(study.run_arguments));
   REQUIRE_MESSAGE(outcome.exit_code == 0, outcome.err);
   return outcome;
 }
@@ -143,6 +127,13 @@ pid_t start_and_wait_for_chunks(const Study& study, const fs::path& directory) {
     REQUIRE_MESSAGE(std::chrono::steady_clock::now() < deadline, "no checkpoint after 120 s");
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
+}
+
+// Sends `signal` to the run in `directory` once its checkpoint holds 20 chunks; its wait status.
+int interrupt_after_chunks(const Study& study, const fs::path& directory, int signal) {
+  const pid_t pid = start_and_wait_for_chunks(study, directory);
+  kill(pid, signal);
+  return wait_for(pid);
 }
 
 std::size_t samples_in_log(const fs::path& log) {
@@ -167,15 +158,24 @@ void check_identical(const fs::path& resumed, const fs::path& reference) {
   }
 }
 
+// Resumes the run in `work` with `command`: it must succeed and print, and write, byte for byte
+// what the uninterrupted reference run did.
+void check_resumes_identically(const Study& study, const fs::path& work, const CliOutcome& reference,
+                               const std::vector<std::string>& command,
+                               const std::vector<std::string>& environment = {}) {
+  const CliOutcome resumed = run_in(work, command, environment);
+  REQUIRE_MESSAGE(resumed.exit_code == 0, resumed.err);
+  CHECK(resumed.out == reference.out);
+  check_identical(work / "out", study.root / "reference" / "out");
+}
+
 }  // namespace
 
 TEST_CASE("SIGTERM stops a run cleanly; --resume finishes it byte-identical to an uninterrupted run") {
   Study study("sigterm");
-  const Outcome reference = reference_run(study);
+  const CliOutcome reference = reference_run(study);
   const fs::path work = study.directory("interrupted");
-  const pid_t pid = start_and_wait_for_chunks(study, work);
-  kill(pid, SIGTERM);
-  const int status = wait_for(pid);
+  const int status = interrupt_after_chunks(study, work, SIGTERM);
   REQUIRE(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 143);
 
@@ -192,35 +192,30 @@ TEST_CASE("SIGTERM stops a run cleanly; --resume finishes it byte-identical to a
   CHECK(done < 200000);
 
   // A new run into the interrupted directory is refused with the way to finish it.
-  const Outcome again = run_in(work, cli(study.run_arguments));
+  const CliOutcome again = run_in(work, cli(study.run_arguments));
   CHECK(again.exit_code == 2);
   CHECK(again.err.find("out: holds an interrupted run; finish it with: growthuq run --resume out (or pass --force to start it again)") != std::string::npos);
   // Options that would change the result are refused with --resume.
-  const Outcome more = run_in(work, cli({"run", "--resume", "out", "--samples", "200000"}));
+  const CliOutcome more = run_in(work, cli({"run", "--resume", "out", "--samples", "200000"}));
   CHECK(more.exit_code == 2);
   CHECK(more.err.find("--samples cannot be combined with --resume") != std::string::npos);
-  const Outcome both = run_in(work, cli({"run", study.campaign.string(), "--resume", "out"}));
+  const CliOutcome both = run_in(work, cli({"run", study.campaign.string(), "--resume", "out"}));
   CHECK(both.exit_code == 2);
   CHECK(both.err.find("not both") != std::string::npos);
 
-  const Outcome resumed = run_in(work, cli({"run", "--resume", "out", "--quiet"}));
-  REQUIRE_MESSAGE(resumed.exit_code == 0, resumed.err);
-  CHECK(resumed.out == reference.out);
-  check_identical(work / "out", study.root / "reference" / "out");
+  check_resumes_identically(study, work, reference, cli({"run", "--resume", "out", "--quiet"}));
   CHECK_FALSE(fs::exists(work / "out" / "checkpoint"));
 
-  const Outcome finished = run_in(work, cli({"run", "--resume", "out"}));
+  const CliOutcome finished = run_in(work, cli({"run", "--resume", "out"}));
   CHECK(finished.exit_code == 2);
   CHECK(finished.err.find("holds no checkpoint") != std::string::npos);
 }
 
 TEST_CASE("after SIGKILL and a torn record, a changed line file is refused; restored, the run resumes identically") {
   Study study("sigkill");
-  const Outcome reference = reference_run(study);
+  const CliOutcome reference = reference_run(study);
   const fs::path work = study.directory("killed");
-  const pid_t pid = start_and_wait_for_chunks(study, work);
-  kill(pid, SIGKILL);
-  const int status = wait_for(pid);
+  const int status = interrupt_after_chunks(study, work, SIGKILL);
   REQUIRE(WIFSIGNALED(status));
   CHECK(WTERMSIG(status) == SIGKILL);
 
@@ -235,34 +230,27 @@ TEST_CASE("after SIGKILL and a torn record, a changed line file is refused; rest
   const fs::path line = study.root / "lines" / "pme48.ini";
   const std::string original = slurp(line);
   spit(line, original + "# edited after the run started\n");
-  const Outcome refused = run_in(work, cli({"run", "--resume", "out"}));
+  const CliOutcome refused = run_in(work, cli({"run", "--resume", "out"}));
   CHECK(refused.exit_code == 2);
   CHECK(refused.err.find(line.string() + ": changed since the interrupted run") != std::string::npos);
   spit(line, original);
 
-  const Outcome resumed = run_in(work, cli({"run", "--resume", "out", "--quiet"}));
-  REQUIRE_MESSAGE(resumed.exit_code == 0, resumed.err);
-  CHECK(resumed.out == reference.out);
-  check_identical(work / "out", study.root / "reference" / "out");
+  check_resumes_identically(study, work, reference, cli({"run", "--resume", "out", "--quiet"}));
   CHECK(entries(work / "out") == std::set<std::string>{"samples.csv", "summary.csv", "results.h5"});
 }
 
 TEST_CASE("a serially interrupted run resumes under mpirun -np 2 to the identical result") {
   Study study("mpi");
-  const Outcome reference = reference_run(study);
+  const CliOutcome reference = reference_run(study);
   const fs::path work = study.directory("interrupted");
-  const pid_t pid = start_and_wait_for_chunks(study, work);
-  kill(pid, SIGINT);
-  const int status = wait_for(pid);
+  const int status = interrupt_after_chunks(study, work, SIGINT);
   REQUIRE(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 130);
 
   const std::vector<std::string> environment = split(GROWTHUQ_MPI_ENVIRONMENT, ' ');
-  const Outcome resumed = run_in(work, {GROWTHUQ_MPIEXEC, "-np", "2", "--oversubscribe", GROWTHUQ_CLI, "run", "--resume", "out", "--quiet"},
-                                 environment);
-  REQUIRE_MESSAGE(resumed.exit_code == 0, resumed.err);
-  CHECK(resumed.out == reference.out);
-  check_identical(work / "out", study.root / "reference" / "out");
+  check_resumes_identically(study, work, reference,
+                            {GROWTHUQ_MPIEXEC, "-np", "2", "--oversubscribe", GROWTHUQ_CLI, "run", "--resume", "out", "--quiet"},
+                            environment);
 }
 
 TEST_CASE("with --no-checkpoint an interrupted run keeps nothing and says so") {

@@ -3,69 +3,32 @@
 // and bad options.
 #include <doctest/doctest.h>
 
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "growthuq/io/csv.hpp"
+#include "support/cli_run.hpp"
+#include "support/scratch_directory.hpp"
+#include "support/text_file.hpp"
 
 using namespace growthuq;
+using namespace growthuq::testing;
 namespace fs = std::filesystem;
 
 namespace {
 
 const std::string campaign_path = std::string(GROWTHUQ_SOURCE_DIR) + "/tests/campaign/data/small_campaign.ini";
 
-struct CliOutcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// Runs the CLI with `arguments` (shell words) in `directory`, capturing stdout and stderr.
-CliOutcome run_cli_in(const fs::path& directory, const std::string& arguments) {
-  const fs::path out = directory / "stdout.txt";
-  const fs::path err = directory / "stderr.txt";
-  const std::string command = "cd " + directory.string() + " && " + std::string(GROWTHUQ_CLI) + " " + arguments + " >" +
-                              out.string() + " 2>" + err.string();
-  const int status = std::system(command.c_str());
-  CliOutcome outcome;
-  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  outcome.out = slurp(out);
-  outcome.err = slurp(err);
-  return outcome;
-}
-
-struct ScratchDirectory {
-  fs::path root;
-  explicit ScratchDirectory(const std::string& name) : root(fs::temp_directory_path() / ("growthuq_test_tradeoff_" + name)) {
-    fs::remove_all(root);
-    fs::create_directories(root);
-  }
-  ~ScratchDirectory() { fs::remove_all(root); }
-};
-
 // summary.csv of `growthuq run --samples N`, by (line, quantity).
 std::map<std::pair<std::string, std::string>, std::vector<std::string>> run_summary(const fs::path& directory, int samples) {
   const fs::path out = directory / ("run_" + std::to_string(samples));
-  const CliOutcome run = run_cli_in(directory, "run " + campaign_path + " --quiet --formats csv --samples " +
-                                                   std::to_string(samples) + " --out " + out.string());
+  const CliOutcome run = run_cli("run " + campaign_path + " --quiet --formats csv --samples " +
+                                                   std::to_string(samples) + " --out " + out.string(), directory);
   REQUIRE(run.exit_code == 0);
   const CsvTable summary = read_csv((out / "summary.csv").string());
   std::map<std::pair<std::string, std::string>, std::vector<std::string>> rows;
@@ -76,10 +39,10 @@ std::map<std::pair<std::string, std::string>, std::vector<std::string>> run_summ
 }  // namespace
 
 TEST_CASE("growthuq tradeoff writes one row per count x line x quantity, the summaries of growthuq run") {
-  const ScratchDirectory scratch("table");
+  const ScratchDirectory scratch("tradeoff_table");
   const fs::path csv = scratch.root / "trade.csv";
   const CliOutcome tradeoff =
-      run_cli_in(scratch.root, "tradeoff " + campaign_path + " --samples-list 50,200,1000 --quiet --out " + csv.string());
+      run_cli("tradeoff " + campaign_path + " --samples-list 50,200,1000 --quiet --out " + csv.string(), scratch.root);
   INFO(tradeoff.err);
   REQUIRE(tradeoff.exit_code == 0);
   CHECK(tradeoff.err.empty());  // --quiet
@@ -131,10 +94,10 @@ TEST_CASE("growthuq tradeoff writes one row per count x line x quantity, the sum
 }
 
 TEST_CASE("growthuq tradeoff: default table location, progress, refusal to overwrite, --force") {
-  const ScratchDirectory scratch("overwrite");
+  const ScratchDirectory scratch("tradeoff_overwrite");
   // output_dir = small_out in the campaign, relative to the current directory; created.
   const fs::path csv = scratch.root / "small_out" / "tradeoff.csv";
-  CliOutcome run = run_cli_in(scratch.root, "tradeoff " + campaign_path + " --samples-list 20,60 --target 50%");
+  CliOutcome run = run_cli("tradeoff " + campaign_path + " --samples-list 20,60 --target 50%", scratch.root);
   INFO(run.err);
   REQUIRE(run.exit_code == 0);
   REQUIRE(fs::is_regular_file(csv));
@@ -142,19 +105,19 @@ TEST_CASE("growthuq tradeoff: default table location, progress, refusal to overw
   CHECK(run.err.find("tradeoff: 60 samples per line\n") != std::string::npos);
   const std::string first = slurp(csv);
 
-  run = run_cli_in(scratch.root, "tradeoff " + campaign_path + " --samples-list 20,60 --quiet --seed 12");
+  run = run_cli("tradeoff " + campaign_path + " --samples-list 20,60 --quiet --seed 12", scratch.root);
   CHECK(run.exit_code == 2);
   CHECK(run.err == "growthuq tradeoff: error: small_out/tradeoff.csv: already exists; choose another output or pass --force to overwrite\n");
   CHECK(slurp(csv) == first);
 
-  run = run_cli_in(scratch.root, "tradeoff " + campaign_path + " --samples-list 20,60 --quiet --seed 12 --force");
+  run = run_cli("tradeoff " + campaign_path + " --samples-list 20,60 --quiet --seed 12 --force", scratch.root);
   CHECK(run.exit_code == 0);
   CHECK(slurp(csv) != first);  // another seed, other designs
   CHECK_FALSE(fs::exists(scratch.root / "small_out" / "tradeoff.csv.partial"));
 }
 
 TEST_CASE("growthuq tradeoff: bad options are one line and exit code 2, before any output") {
-  const ScratchDirectory scratch("bad");
+  const ScratchDirectory scratch("tradeoff_bad");
   const std::string start = "tradeoff " + campaign_path + " --quiet ";
   const std::vector<std::pair<std::string, std::string>> cases{
       {"--target 0", "--target = '0': expected a percentage above 0 and at most 100, e.g. 1%"},
@@ -169,7 +132,7 @@ TEST_CASE("growthuq tradeoff: bad options are one line and exit code 2, before a
   };
   for (const auto& [options, message] : cases) {
     INFO(options);
-    const CliOutcome run = run_cli_in(scratch.root, start + options);
+    const CliOutcome run = run_cli(start + options, scratch.root);
     CHECK(run.exit_code == 2);
     CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
     CHECK(run.err.starts_with("growthuq tradeoff: error: "));

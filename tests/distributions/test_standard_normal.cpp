@@ -10,18 +10,10 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/distributions/standard_normal.hpp"
+#include "support/ulps.hpp"
 
 using namespace growthuq;
-
-namespace {
-
-double ulps_apart(double a, double b) {
-  if (a == b) return 0.0;
-  const double ulp = std::nextafter(std::fabs(b), HUGE_VAL) - std::fabs(b);
-  return std::fabs(a - b) / ulp;
-}
-
-}  // namespace
+using namespace growthuq::testing;
 
 TEST_CASE("standard normal quantile equals GSL's AS241 to 2 ulps on a dense grid, both tails") {
   // Same coefficients and the same evaluation order as GSL, so agreement is expected to be

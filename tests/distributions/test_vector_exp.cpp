@@ -10,18 +10,10 @@
 
 #include "distributions/vector_exp.hpp"
 #include "growthuq/sampling/random_stream.hpp"
+#include "support/ulps.hpp"
 
 using namespace growthuq;
-
-namespace {
-
-double ulps_apart(double a, double b) {
-  if (a == b) return 0.0;
-  const double ulp = std::nextafter(std::fabs(b), HUGE_VAL) - std::fabs(b);
-  return std::fabs(a - b) / ulp;
-}
-
-}  // namespace
+using namespace growthuq::testing;
 
 TEST_CASE("Cephes exp is within 2 ulps of std::exp; batch equals scalar") {
   RandomStream stream(derive_key(5, "exp"));

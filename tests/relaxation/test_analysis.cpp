@@ -12,8 +12,10 @@
 #include "growthuq/relaxation/modulus.hpp"
 #include "growthuq/relaxation/prony_fit.hpp"
 #include "growthuq/relaxation/simulator.hpp"
+#include "support/relaxation_curve.hpp"
 
 using namespace growthuq;
+using namespace growthuq::testing;
 
 namespace {
 
@@ -26,19 +28,6 @@ double stiffness(double E, const ShellGeometry& s) {
   const double alpha = std::sqrt(3.0 * s.turgor * std::pow(s.diameter, 3) /
                                  (16.0 * (2.0 * E * s.thickness / (1.0 - s.poisson * s.poisson) - s.turgor * s.diameter)));
   return 0.75 * std::numbers::pi * s.turgor * s.diameter * arnoldi_phi(s.probe_radius / alpha);
-}
-
-RelaxationCurve as_curve(const SimulatedCurve& simulated) {
-  RelaxationCurve curve;
-  curve.name = "simulated";
-  curve.t = simulated.t;
-  curve.force = simulated.force;
-  curve.indentation = simulated.indentation;
-  curve.turgor = tube.turgor;
-  curve.diameter = tube.diameter;
-  curve.thickness = tube.thickness;
-  curve.probe_radius = tube.probe_radius;
-  return curve;
 }
 
 // k_inf / k0 = 0.65, k0 = 3 N/m (wild-type stiffness), tau 0.2 s and 3 s.
@@ -90,7 +79,7 @@ TEST_CASE("analysis: the ramp-aware fit recovers the exact step response; the st
     protocol.rate = rate;
     protocol.sample_interval = dt;
     const SimulatedCurve simulated = simulate_ramp_hold(wall, protocol);
-    const RelaxationCurve curve = as_curve(simulated);
+    const RelaxationCurve curve = as_curve(simulated, tube, "simulated");
     RelaxationOptions options;
     options.ramp_aware = true;
     const CurveFit aware = analyze_relaxation_curve(curve, options);
@@ -121,7 +110,7 @@ TEST_CASE("analysis: the ramp-aware fit recovers the exact step response; the st
 
 TEST_CASE("analysis: dropping t < 10 x ramp time removes the fast phase") {
   RampHoldProtocol protocol;  // 10 um/s: a 0.18 s ramp, so 10x is 1.8 s of a 5 s hold
-  const RelaxationCurve curve = as_curve(simulate_ramp_hold(wall, protocol));
+  const RelaxationCurve curve = as_curve(simulate_ramp_hold(wall, protocol), tube, "simulated");
   RelaxationOptions options;
   options.drop_ramp_multiple = 10.0;
   const CurveFit dropped = analyze_relaxation_curve(curve, options);
@@ -133,13 +122,13 @@ TEST_CASE("analysis: dropping t < 10 x ramp time removes the fast phase") {
   CHECK(dropped.tau[0] > 3.0 * truth.tau[0]);
   // A 1 s ramp leaves nothing of a 5 s hold: reported, not fitted.
   protocol.rate = 2e-6;
-  const CurveFit starved = analyze_relaxation_curve(as_curve(simulate_ramp_hold(wall, protocol)), options);
+  const CurveFit starved = analyze_relaxation_curve(as_curve(simulate_ramp_hold(wall, protocol), tube, "simulated"), options);
   CHECK_FALSE(starved.ok);
   CHECK(starved.reason.find("10 x ramp time") != std::string::npos);
 }
 
 TEST_CASE("analysis: a curve whose force peaks at its end is reported, not fitted") {
-  RelaxationCurve curve = as_curve(simulate_ramp_hold(wall, RampHoldProtocol{}));
+  RelaxationCurve curve = as_curve(simulate_ramp_hold(wall, RampHoldProtocol{}), tube, "simulated");
   curve.t.resize(30);
   curve.force.resize(30);  // the ramp only
   const CurveFit fit = analyze_relaxation_curve(curve, RelaxationOptions{});
@@ -173,7 +162,7 @@ TEST_CASE("analysis: fitted_force reproduces a noise-free curve from the fitted 
   RampHoldProtocol protocol;
   protocol.rate = 50e-6;
   const SimulatedCurve simulated = simulate_ramp_hold(wall, protocol);
-  const RelaxationCurve curve = as_curve(simulated);
+  const RelaxationCurve curve = as_curve(simulated, tube, "simulated");
   const auto peak = static_cast<std::size_t>(std::max_element(curve.force.begin(), curve.force.end()) - curve.force.begin());
 
   // Step fit: E_r / E_r(0) is fitted to rms 1e-4 or better here (a two-term series in E_r

@@ -25,8 +25,10 @@
 #include "growthuq/relaxation/modulus.hpp"
 #include "growthuq/synthetic/relaxation_tube.hpp"
 #include "growthuq/synthetic/synthetic_line.hpp"
+#include "support/relaxation_curve.hpp"
 
 using namespace growthuq;
+using namespace growthuq::testing;
 namespace fs = std::filesystem;
 
 namespace {
@@ -57,19 +59,6 @@ RelaxationTube wild_type_tube() {
 double relative_modulus(const RelaxationTube& tube, double t) {
   return tube.einf + (1.0 - tube.einf) * (tube.fast_share * std::exp(-t / tube.tau_fast) +
                                           (1.0 - tube.fast_share) * std::exp(-t / tube.tau_slow));
-}
-
-RelaxationCurve as_curve(const SimulatedCurve& simulated, const RelaxationTube& tube) {
-  RelaxationCurve curve;
-  curve.name = "synthetic";
-  curve.t = simulated.t;
-  curve.force = simulated.force;
-  curve.indentation = simulated.indentation;
-  curve.turgor = tube.turgor;
-  curve.diameter = tube.diameter;
-  curve.thickness = tube.thickness;
-  curve.probe_radius = tube.probe_radius;
-  return curve;
 }
 
 // log P(B = k), B ~ binomial(n, p).
@@ -143,7 +132,7 @@ TEST_CASE("synthetic tube: the hold is delta k(E_r(t - t_ramp)) and a noise-free
   // The step fit takes t = 0 and E_r(0) at the first hold sample, t_1 = 5 ms after the step:
   // it sees E_r(t + t_1) / E_r(t_1), whose constant is einf / y(t_1) and whose taus are the
   // tube's. The fit resolves them to the simplex tolerance and the 1e-5 model error: 1e-4.
-  const CurveFit fit = analyze_relaxation_curve(as_curve(simulated, tube), RelaxationOptions{});
+  const CurveFit fit = analyze_relaxation_curve(as_curve(simulated, tube, "synthetic"), RelaxationOptions{});
   REQUIRE(fit.ok);
   const double offset = simulated.t[1] - simulated.ramp_end;
   CHECK(fit.tau[0] == doctest::Approx(tube.tau_fast).epsilon(1e-4));
