@@ -7,14 +7,18 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/io/ini.hpp"
+#include "io/ini_checks.hpp"
 
 namespace growthuq {
 namespace {
+
+using detail::required_entry;
 
 constexpr std::array<std::string_view, 7> measured_variables{"k", "h", "d", "d0", "tau", "einf", "v_exp"};
 constexpr std::array<std::string_view, 4> common_keys{"law", "unit", "source", "note"};
@@ -149,16 +153,6 @@ Distribution make_distribution(const IniDocument& document, const IniSection& se
   }
 }
 
-const IniEntry& required(const IniDocument& document, const IniSection& section, std::string_view key,
-                         std::string_view what) {
-  const IniEntry* entry = section.find(key);
-  if (!entry || entry->value.empty()) {
-    throw InputError(document.location(section.line),
-                     "[" + section.name + "] has no '" + std::string(key) + "': expected " + std::string(what));
-  }
-  return *entry;
-}
-
 LineVariable read_variable(const IniDocument& document, const IniSection& section) {
   const std::string section_location = document.location(section.line);
   if (std::find(measured_variables.begin(), measured_variables.end(), section.name) == measured_variables.end()) {
@@ -168,7 +162,7 @@ LineVariable read_variable(const IniDocument& document, const IniSection& sectio
   }
   const Quantity& quantity = *find_quantity(section.name);
 
-  const IniEntry& law_entry = required(document, section, "law", "law = " + joined(std::vector<std::string_view>{
+  const IniEntry& law_entry = required_entry(document, section, "law", "law = " + joined(std::vector<std::string_view>{
       "lognormal", "normal", "truncated_normal", "uniform", "gamma", "weibull", "empirical"}));
   const auto law = std::find_if(laws().begin(), laws().end(), [&](const Law& l) { return l.name == law_entry.value; });
   if (law == laws().end()) {
@@ -177,21 +171,12 @@ LineVariable read_variable(const IniDocument& document, const IniSection& sectio
     throw_bad_value(document.location(law_entry.line), "law", law_entry.value, "one of " + joined(names));
   }
 
-  const IniEntry& unit_entry = required(document, section, "unit", "the unit of the values, e.g. unit = " +
-                                                                        std::string(quantity.default_unit));
-  const Unit& unit = find_unit(unit_entry.value, document.location(unit_entry.line), "unit");
-  if (unit.dimension != quantity.dimension) {
-    std::vector<std::string_view> fitting;
-    for (const Unit& u : known_units()) {
-      if (u.dimension == quantity.dimension) fitting.push_back(u.symbol);
-    }
-    throw_bad_value(document.location(unit_entry.line), "unit", unit_entry.value,
-                    "a unit of " + std::string(to_string(quantity.dimension)) + " for " + section.name + " (" +
-                        joined(fitting) + ")");
-  }
+  const IniEntry& unit_entry =
+      required_entry(document, section, "unit", "the unit of the values, e.g. unit = " + std::string(quantity.default_unit));
+  const Unit& unit = detail::unit_of(document, unit_entry, quantity);
 
   const std::string source =
-      required(document, section, "source", "source = <citation>, or source = illustrative with a note").value;
+      required_entry(document, section, "source", "source = <citation>, or source = illustrative with a note").value;
   const IniEntry* note = section.find("note");
   if (source == "illustrative" && (!note || note->value.empty())) {
     throw InputError(section_location, "[" + section.name +
@@ -212,17 +197,11 @@ const LineVariable* LineDistributions::find(std::string_view variable_name) cons
 
 LineDistributions read_line_file(const std::string& path) {
   const IniDocument document = read_ini(path);
+  detail::reject_entries_before_sections(document);
   LineDistributions line;
   line.path = path;
-  const IniSection* header = nullptr;
   for (const IniSection& section : document.sections) {
-    if (section.name.empty()) {
-      const IniEntry& first = section.entries.front();
-      throw InputError(document.location(first.line),
-                       "'" + first.key + " = " + first.value + "' comes before any [section]: expected [line] first");
-    }
     if (section.name == "line") {
-      header = &section;
       for (const IniEntry& entry : section.entries) {
         if (entry.key != "name" && entry.key != "description") {
           throw InputError(document.location(entry.line),
@@ -233,9 +212,9 @@ LineDistributions read_line_file(const std::string& path) {
     }
     line.variables.push_back(read_variable(document, section));
   }
-  if (!header) throw InputError(path, "no [line] section: expected [line] with name = <plant line>");
-  line.name = required(document, *header, "name", "name = <plant line>").value;
-  if (const IniEntry* description = header->find("description")) line.description = description->value;
+  detail::LineHeader header = detail::read_line_header(document);
+  line.name = std::move(header.name);
+  line.description = std::move(header.description);
   if (line.variables.empty()) {
     throw InputError(path, "no variable sections: expected at least one of " + joined(measured_variables));
   }

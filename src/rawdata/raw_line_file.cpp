@@ -5,15 +5,19 @@
 #include <algorithm>
 #include <array>
 #include <filesystem>
+#include <utility>
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/io/ini.hpp"
+#include "io/ini_checks.hpp"
 
 namespace growthuq {
 namespace {
 
 namespace fs = std::filesystem;
+
+using detail::required_entry;
 
 constexpr std::array<std::string_view, 7> measured_variables{"k", "h", "d", "d0", "tau", "einf", "v_exp"};
 
@@ -31,16 +35,6 @@ void reject_unknown_keys(const IniDocument& document, const IniSection& section,
                                                           "] (allowed: " + joined(allowed) + ")");
     }
   }
-}
-
-const IniEntry& required(const IniDocument& document, const IniSection& section, std::string_view key,
-                         std::string_view what) {
-  const IniEntry* entry = section.find(key);
-  if (!entry || entry->value.empty()) {
-    throw InputError(document.location(section.line),
-                     "[" + section.name + "] has no '" + std::string(key) + "': expected " + std::string(what));
-  }
-  return *entry;
 }
 
 // A file named in the raw file, relative to the raw file's folder; it must exist.
@@ -85,20 +79,12 @@ RawMeasurement read_measurement(const IniDocument& document, const IniSection& s
                      "[" + section.name + "]: expected [measurement V] with V one of k, h, d, d0, tau, einf, v_exp");
   }
   reject_unknown_keys(document, section, {"file", "column", "unit", "families"});
-  measurement.file = existing_file(document, required(document, section, "file", "file = <CSV table>"));
-  measurement.column = required(document, section, "column", "column = <header name in the table>").value;
+  measurement.file = existing_file(document, required_entry(document, section, "file", "file = <CSV table>"));
+  measurement.column = required_entry(document, section, "column", "column = <header name in the table>").value;
   const Quantity& quantity = *find_quantity(measurement.variable);
-  const IniEntry& unit = required(document, section, "unit", "unit = " + std::string(quantity.default_unit) + " (the unit of the column's values)");
-  measurement.unit = &find_unit(unit.value, document.location(unit.line), "unit");
-  if (measurement.unit->dimension != quantity.dimension) {
-    std::vector<std::string> fitting;
-    for (const Unit& candidate : known_units()) {
-      if (candidate.dimension == quantity.dimension) fitting.emplace_back(candidate.symbol);
-    }
-    throw_bad_value(document.location(unit.line), "unit", unit.value,
-                    "a unit of " + std::string(to_string(quantity.dimension)) + " for " + measurement.variable + " (" +
-                        joined(fitting) + ")");
-  }
+  const IniEntry& unit = required_entry(document, section, "unit",
+                                        "unit = " + std::string(quantity.default_unit) + " (the unit of the column's values)");
+  measurement.unit = &detail::unit_of(document, unit, quantity);
   measurement.families = families_of(document, section);
   return measurement;
 }
@@ -107,7 +93,8 @@ RawRelaxation read_relaxation(const IniDocument& document, const IniSection& sec
   RawRelaxation relaxation;
   relaxation.line = section.line;
   reject_unknown_keys(document, section, {"curves", "meta", "terms", "fit", "families"});
-  relaxation.curves = existing_file(document, required(document, section, "curves", "curves = <CSV curve,t_s,F_uN>"));
+  relaxation.curves =
+      existing_file(document, required_entry(document, section, "curves", "curves = <CSV curve,t_s,F_uN>"));
   if (const IniEntry* meta = section.find("meta")) relaxation.meta = existing_file(document, *meta);
   if (const IniEntry* terms = section.find("terms")) {
     relaxation.terms = static_cast<int>(parse_count(terms->value, document.location(terms->line), "terms", 1, 3));
@@ -137,17 +124,11 @@ std::vector<std::string> RawLineFile::variables() const {
 
 RawLineFile read_raw_line_file(const std::string& path) {
   const IniDocument document = read_ini(path);
+  detail::reject_entries_before_sections(document);
   RawLineFile raw;
   raw.path = path;
-  const IniSection* header = nullptr;
   for (const IniSection& section : document.sections) {
-    if (section.name.empty()) {
-      const IniEntry& first = section.entries.front();
-      throw InputError(document.location(first.line),
-                       "'" + first.key + " = " + first.value + "' comes before any [section]: expected [line] first");
-    }
     if (section.name == "line") {
-      header = &section;
       reject_unknown_keys(document, section, {"name", "description"});
     } else if (section.name.starts_with("measurement ")) {
       RawMeasurement measurement = read_measurement(document, section);
@@ -166,9 +147,9 @@ RawLineFile read_raw_line_file(const std::string& path) {
                        "unknown section [" + section.name + "]: expected [line], [measurement VARIABLE] or [relaxation]");
     }
   }
-  if (!header) throw InputError(path, "no [line] section: expected [line] with name = <plant line>");
-  raw.name = required(document, *header, "name", "name = <plant line>").value;
-  if (const IniEntry* description = header->find("description")) raw.description = description->value;
+  detail::LineHeader header = detail::read_line_header(document);
+  raw.name = std::move(header.name);
+  raw.description = std::move(header.description);
   if (raw.has_relaxation) {
     for (const RawMeasurement& measurement : raw.measurements) {
       if (measurement.variable == "tau" || measurement.variable == "einf") {
