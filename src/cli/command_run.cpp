@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
-#include <memory>
 #include <optional>
 #include <string>
 
@@ -23,6 +22,7 @@
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/pool/pool.hpp"
 #include "options.hpp"
+#include "pool_command.hpp"
 
 namespace growthuq::cli {
 
@@ -108,14 +108,7 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
   if (values.count("resume")) {
     prepared.emplace(resumed(options.resume, pool, settings));
   } else {
-    // Rank 0 reads the file so that every process validates exactly the same text.
-    std::string text;
-    on_coordinator(pool, [&] {
-      Campaign probe = read_campaign(options.campaign);
-      text = std::move(probe.text);
-    });
-    text = pool.broadcast(text);
-    Campaign campaign = parse_campaign(text, options.campaign);
+    Campaign campaign = read_campaign_on_pool(options.campaign, pool);
     const CampaignOverrides overrides = overrides_of(options, values);
     apply_overrides(campaign, overrides);
     prepared.emplace(std::move(campaign));
@@ -189,17 +182,7 @@ int run_run(const Arguments& arguments) {
                        described, positional, values)) {
     return 0;
   }
-  const std::unique_ptr<Pool> pool = make_pool();
-  if (pool->is_coordinator()) return run_campaign_command(options, values, arguments, *pool);
-  // Every process meets the same errors at the same point (on_coordinator shares the
-  // coordinator's); only rank 0 reports them.
-  try {
-    return run_campaign_command(options, values, arguments, *pool);
-  } catch (const InputError&) {
-    return 2;
-  } catch (const std::exception&) {
-    return 3;
-  }
+  return run_on_pool([&](Pool& pool) { return run_campaign_command(options, values, arguments, pool); });
 }
 
 }  // namespace growthuq::cli

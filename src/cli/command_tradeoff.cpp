@@ -4,7 +4,6 @@
 // tradeoff.csv, and the smallest count meeting the requested accuracy is printed on stdout.
 #include <filesystem>
 #include <iostream>
-#include <memory>
 #include <optional>
 #include <string>
 #include <system_error>
@@ -21,6 +20,7 @@
 #include "growthuq/io/output_file.hpp"
 #include "growthuq/pool/pool.hpp"
 #include "options.hpp"
+#include "pool_command.hpp"
 
 namespace growthuq::cli {
 
@@ -97,11 +97,7 @@ int run_tradeoff_command(const TradeoffOptions& options, const po::variables_map
   const std::vector<std::size_t> counts = parse_sample_counts(options.samples_list);
   const double target_pct = parse_target_pct(options.target);
 
-  // Rank 0 reads the file so that every process validates exactly the same text.
-  std::string text;
-  on_coordinator(pool, [&] { text = read_campaign(options.campaign).text; });
-  text = pool.broadcast(text);
-  Campaign campaign = parse_campaign(text, options.campaign);
+  Campaign campaign = read_campaign_on_pool(options.campaign, pool);
   apply_overrides(campaign, overrides_of(options, values));
   {
     // Everything validated (line files, models, reference line) before any output or sampling.
@@ -173,16 +169,7 @@ int run_tradeoff(const Arguments& arguments) {
           described, positional, values)) {
     return 0;
   }
-  const std::unique_ptr<Pool> pool = make_pool();
-  if (pool->is_coordinator()) return run_tradeoff_command(options, values, *pool);
-  // Every process meets the same errors at the same point; only rank 0 reports them.
-  try {
-    return run_tradeoff_command(options, values, *pool);
-  } catch (const InputError&) {
-    return 2;
-  } catch (const std::exception&) {
-    return 3;
-  }
+  return run_on_pool([&](Pool& pool) { return run_tradeoff_command(options, values, pool); });
 }
 
 }  // namespace growthuq::cli
