@@ -196,8 +196,7 @@ const LineVariable* LineDistributions::find(std::string_view variable_name) cons
 }
 
 LineDistributions read_line_file(const std::string& path) {
-  const IniDocument document = read_ini(path);
-  detail::reject_entries_before_sections(document);
+  const IniDocument document = detail::read_plant_line_ini(path);
   LineDistributions line;
   line.path = path;
   for (const IniSection& section : document.sections) {

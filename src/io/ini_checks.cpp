@@ -29,12 +29,15 @@ const Unit& unit_of(const IniDocument& document, const IniEntry& unit_entry, con
   return unit;
 }
 
-void reject_entries_before_sections(const IniDocument& document) {
+IniDocument read_plant_line_ini(const std::string& path) {
+  IniDocument document = read_ini(path);
   // parse_ini keeps the entries before the first header in a leading section named "".
-  if (document.sections.empty() || !document.sections.front().name.empty()) return;
-  const IniEntry& first = document.sections.front().entries.front();
-  throw InputError(document.location(first.line),
-                   "'" + first.key + " = " + first.value + "' comes before any [section]: expected [line] first");
+  if (!document.sections.empty() && document.sections.front().name.empty()) {
+    const IniEntry& first = document.sections.front().entries.front();
+    throw InputError(document.location(first.line),
+                     "'" + first.key + " = " + first.value + "' comes before any [section]: expected [line] first");
+  }
+  return document;
 }
 
 LineHeader read_line_header(const IniDocument& document) {

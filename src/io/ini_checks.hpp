@@ -1,6 +1,6 @@
 // Checks shared by the strict readers of plant-line INI files (distributions/line_file.cpp,
-// rawdata/raw_line_file.cpp): required keys, units of the right dimension and the [line]
-// header. Each failure is an InputError naming the file and line of the offending entry.
+// rawdata/raw_line_file.cpp): required keys, units of the right dimension, the [line] header
+// and nothing before it. Each failure is an InputError naming the file and line at fault.
 #pragma once
 
 #include <string>
@@ -20,8 +20,9 @@ const IniEntry& required_entry(const IniDocument& document, const IniSection& se
 // entry's line lists the units that do.
 const Unit& unit_of(const IniDocument& document, const IniEntry& unit_entry, const Quantity& quantity);
 
-// A plant-line file opens with [line]: an entry before the first section is refused.
-void reject_entries_before_sections(const IniDocument& document);
+// Reads the INI file of a plant line (line file or raw.ini). These open with [line]: an entry
+// before the first section is refused.
+IniDocument read_plant_line_ini(const std::string& path);
 
 struct LineHeader {
   std::string name;

@@ -123,8 +123,7 @@ std::vector<std::string> RawLineFile::variables() const {
 }
 
 RawLineFile read_raw_line_file(const std::string& path) {
-  const IniDocument document = read_ini(path);
-  detail::reject_entries_before_sections(document);
+  const IniDocument document = detail::read_plant_line_ini(path);
   RawLineFile raw;
   raw.path = path;
   for (const IniSection& section : document.sections) {

@@ -136,6 +136,14 @@ int interrupt_after_chunks(const Study& study, const fs::path& directory, int si
   return wait_for(pid);
 }
 
+// Interrupts the run in `directory` with `signal` as above: it must stop cleanly, exiting with
+// `exit_code` (128 + the signal's number).
+void interrupt_cleanly(const Study& study, const fs::path& directory, int signal, int exit_code) {
+  const int status = interrupt_after_chunks(study, directory, signal);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == exit_code);
+}
+
 std::size_t samples_in_log(const fs::path& log) {
   std::size_t samples = 0;
   for (const ChunkRecord& record : scan_chunk_log(log.string()).records) samples += record.range.end - record.range.begin;
@@ -175,9 +183,7 @@ TEST_CASE("SIGTERM stops a run cleanly; --resume finishes it byte-identical to a
   Study study("sigterm");
   const CliOutcome reference = reference_run(study);
   const fs::path work = study.directory("interrupted");
-  const int status = interrupt_after_chunks(study, work, SIGTERM);
-  REQUIRE(WIFEXITED(status));
-  CHECK(WEXITSTATUS(status) == 143);
+  interrupt_cleanly(study, work, SIGTERM, 143);
 
   // No result file and no partial one; only the checkpoint, holding what the message says.
   CHECK(entries(work / "out") == std::set<std::string>{"checkpoint"});
@@ -243,9 +249,7 @@ TEST_CASE("a serially interrupted run resumes under mpirun -np 2 to the identica
   Study study("mpi");
   const CliOutcome reference = reference_run(study);
   const fs::path work = study.directory("interrupted");
-  const int status = interrupt_after_chunks(study, work, SIGINT);
-  REQUIRE(WIFEXITED(status));
-  CHECK(WEXITSTATUS(status) == 130);
+  interrupt_cleanly(study, work, SIGINT, 130);
 
   const std::vector<std::string> environment = split(GROWTHUQ_MPI_ENVIRONMENT, ' ');
   check_resumes_identically(study, work, reference,
