@@ -4,7 +4,6 @@
 #include <doctest/doctest.h>
 
 #include <H5Cpp.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -16,23 +15,19 @@
 #include "growthuq/core/units.hpp"
 #include "growthuq/io/results_h5.hpp"
 #include "growthuq/stats/quantity_summary.hpp"
+#include "support/scratch_directory.hpp"
 
 using namespace growthuq;
+using namespace growthuq::testing;
 namespace fs = std::filesystem;
 
 namespace {
 
 constexpr double missing = std::numeric_limits<double>::quiet_NaN();
 
-// A directory of its own per test process: several builds may run their tests at once.
-struct Scratch {
-  fs::path root;
-  explicit Scratch(const std::string& name)
-      : root(fs::temp_directory_path() / ("growthuq_test_results_h5_" + name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(root);
-    fs::create_directories(root);
-  }
-  ~Scratch() { fs::remove_all(root); }
+// A scratch folder that names its files as the writer takes them.
+struct Scratch : ScratchDirectory {
+  explicit Scratch(const std::string& name) : ScratchDirectory("results_h5_" + name) {}
   std::string path(const std::string& file) const { return (root / file).string(); }
 };
 

@@ -3,60 +3,36 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
-
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/correlation/matrix_file.hpp"
 #include "growthuq/io/csv.hpp"
 #include "growthuq/mechanics/mechanical_correlation.hpp"
+#include "support/cli_run.hpp"
+#include "support/scratch_directory.hpp"
+#include "support/text_file.hpp"
 
 using namespace growthuq;
+using namespace growthuq::testing;
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
-  int exit_code;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream file(path);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-// A fresh scratch folder per test case, removed at the end.
+// A fresh scratch folder per test case, removed at the end, where the CLI runs on files put there.
 class Scratch {
  public:
-  explicit Scratch(const std::string& name)
-      : path_(fs::temp_directory_path() / ("growthuq_mechanics_" + name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~Scratch() { fs::remove_all(path_); }
+  explicit Scratch(const std::string& name) : directory_("mechanics_" + name) {}
   fs::path file(const std::string& name, const std::string& content = "") const {
-    if (!content.empty()) std::ofstream(path_ / name) << content;
-    return path_ / name;
+    if (!content.empty()) std::ofstream(directory_.root / name) << content;
+    return directory_.root / name;
   }
-  Run run(const std::string& arguments) const {
-    const std::string command = "cd '" + path_.string() + "' && '" + GROWTHUQ_CLI + "' " + arguments +
-                                " > stdout.txt 2> stderr.txt";
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(path_ / "stdout.txt"), slurp(path_ / "stderr.txt")};
-  }
+  CliOutcome run(const std::string& arguments) const { return run_cli(arguments, directory_.root); }
 
  private:
-  fs::path path_;
+  ScratchDirectory directory_;
 };
 
 double relative_error(double value, double reference) { return std::fabs(value - reference) / std::fabs(reference); }
@@ -65,7 +41,7 @@ double relative_error(double value, double reference) { return std::fabs(value -
 
 TEST_CASE("eval: one tube from flags prints every output with its unit") {
   const Scratch scratch("eval_point");
-  const Run run = scratch.run("eval --rho-um 0.5 --k 2.87 --d-um 6.56 --d0-um 5.35 --h-nm 145");
+  const CliOutcome run = scratch.run("eval --rho-um 0.5 --k 2.87 --d-um 6.56 --d0-um 5.35 --h-nm 145");
   REQUIRE(run.exit_code == 0);
   // Values: the 40-digit reference of test_thin_shell.cpp, in MPa and um.
   CHECK(run.out.find("  p               0.2528077871117") != std::string::npos);
@@ -76,7 +52,7 @@ TEST_CASE("eval: one tube from flags prints every output with its unit") {
   CHECK(run.out.find("wall_stiffness") != std::string::npos);
   CHECK(run.out.find("status: ok") != std::string::npos);
 
-  const Run no_stretch = scratch.run("eval --rho-um 0.5 --k 2.87 --d-um 5 --d0-um 5.35");
+  const CliOutcome no_stretch = scratch.run("eval --rho-um 0.5 --k 2.87 --d-um 5 --d0-um 5.35");
   CHECK(no_stretch.exit_code == 0);
   CHECK(no_stretch.out.find("status: lambda_not_above_one") != std::string::npos);
   CHECK(no_stretch.out.find("nan") == std::string::npos);
@@ -85,19 +61,19 @@ TEST_CASE("eval: one tube from flags prints every output with its unit") {
 
 TEST_CASE("eval: bad flags are one-line errors with exit code 2") {
   const Scratch scratch("eval_flags");
-  const Run no_rho = scratch.run("eval --k 2.87 --d-um 6.56 --d0-um 5.35");
+  const CliOutcome no_rho = scratch.run("eval --k 2.87 --d-um 6.56 --d0-um 5.35");
   CHECK(no_rho.exit_code == 2);
   CHECK(no_rho.err.find("--rho-um is required") != std::string::npos);
-  const Run text = scratch.run("eval --rho-um 0.5 --k abc --d-um 6.56 --d0-um 5.35");
+  const CliOutcome text = scratch.run("eval --rho-um 0.5 --k abc --d-um 6.56 --d0-um 5.35");
   CHECK(text.exit_code == 2);
   CHECK(text.err.find("--k = 'abc': expected a finite number") != std::string::npos);
-  const Run negative = scratch.run("eval --rho-um 0.5 --k 2 --d-um -6 --d0-um 5.35");
+  const CliOutcome negative = scratch.run("eval --rho-um 0.5 --k 2 --d-um -6 --d0-um 5.35");
   CHECK(negative.exit_code == 2);
   CHECK(negative.err.find("--d-um = '-6': expected a positive diameter in um") != std::string::npos);
-  const Run nu = scratch.run("eval --rho-um 0.5 --k 2 --d-um 6 --d0-um 5 --nu 1.5");
+  const CliOutcome nu = scratch.run("eval --rho-um 0.5 --k 2 --d-um 6 --d0-um 5 --nu 1.5");
   CHECK(nu.exit_code == 2);
   CHECK(nu.err.find("--nu = '1.5'") != std::string::npos);
-  const Run mixed = scratch.run("eval --rho-um 0.5 --k 2 --in tubes.csv --out r.csv");
+  const CliOutcome mixed = scratch.run("eval --rho-um 0.5 --k 2 --in tubes.csv --out r.csv");
   CHECK(mixed.exit_code == 2);
   CHECK(mixed.err.find("--k cannot be combined with --in") != std::string::npos);
 }
@@ -112,7 +88,7 @@ TEST_CASE("eval: a file of tubes gets outputs, empty cells and a status per row"
                "C,2.0,150,5.0,5.35\n"
                "D,-1,150,6,5\n"
                "E,2,0,6,5\n");
-  const Run run = scratch.run("eval --in tubes.csv --out results.csv --rho-um 0.5");
+  const CliOutcome run = scratch.run("eval --in tubes.csv --out results.csv --rho-um 0.5");
   REQUIRE(run.exit_code == 0);
   CHECK(run.out.find("lambda_not_above_one        1") != std::string::npos);
   const CsvTable results = read_csv(scratch.file("results.csv").string());
@@ -133,7 +109,7 @@ TEST_CASE("eval: a file of tubes gets outputs, empty cells and a status per row"
   CHECK(slurp(scratch.file("results.csv")).find("nan") == std::string::npos);
 
   // Existing output: refused without --force, replaced with it.
-  const Run again = scratch.run("eval --in tubes.csv --out results.csv --rho-um 0.5");
+  const CliOutcome again = scratch.run("eval --in tubes.csv --out results.csv --rho-um 0.5");
   CHECK(again.exit_code == 2);
   CHECK(again.err.find("--force") != std::string::npos);
   CHECK(scratch.run("eval --in tubes.csv --out results.csv --rho-um 1 --force").exit_code == 0);
@@ -152,17 +128,17 @@ TEST_CASE("eval: a file of tubes gets outputs, empty cells and a status per row"
 TEST_CASE("eval: bad files name the file, the line and the column") {
   const Scratch scratch("eval_bad");
   scratch.file("missing_column.csv", "k_N_per_m,d_um\n2.87,6.56\n");
-  const Run missing = scratch.run("eval --in missing_column.csv --out r.csv --rho-um 0.5");
+  const CliOutcome missing = scratch.run("eval --in missing_column.csv --out r.csv --rho-um 0.5");
   CHECK(missing.exit_code == 2);
   CHECK(missing.err.find("missing_column.csv: no column for plasmolysed diameter: expected 'd0_um'") != std::string::npos);
   scratch.file("text_cell.csv", "k_N_per_m,d_um,d0_um\n2.87,6.56,5.35\n2.1,abc,5\n");
-  const Run text = scratch.run("eval --in text_cell.csv --out r.csv --rho-um 0.5");
+  const CliOutcome text = scratch.run("eval --in text_cell.csv --out r.csv --rho-um 0.5");
   CHECK(text.exit_code == 2);
   CHECK(text.err.find("text_cell.csv:3: column d_um = 'abc': expected a finite number") != std::string::npos);
   scratch.file("ragged.csv", "k_N_per_m,d_um,d0_um\n2.87,6.56\n");
   CHECK(scratch.run("eval --in ragged.csv --out r.csv --rho-um 0.5").exit_code == 2);
   scratch.file("clash.csv", "k_N_per_m,d_um,d0_um,p_MPa\n2.87,6.56,5.35,1\n");
-  const Run clash = scratch.run("eval --in clash.csv --out r.csv --rho-um 0.5");
+  const CliOutcome clash = scratch.run("eval --in clash.csv --out r.csv --rho-um 0.5");
   CHECK(clash.exit_code == 2);
   CHECK(clash.err.find("already has a column 'p_MPa'") != std::string::npos);
   CHECK(!fs::exists(scratch.file("r.csv")));
@@ -170,7 +146,7 @@ TEST_CASE("eval: bad files name the file, the line and the column") {
 
 TEST_CASE("correlate: writes the matrix `sample` reads, equal to the library's") {
   const Scratch scratch("correlate");
-  const Run run = scratch.run("correlate --rho-um 0.5 --samples 4000 --seed 3 --out matrix.csv");
+  const CliOutcome run = scratch.run("correlate --rho-um 0.5 --samples 4000 --seed 3 --out matrix.csv");
   REQUIRE(run.exit_code == 0);
   CHECK(run.out.find("burst (p d0 / (2 h E) > 1/e), dropped: ") != std::string::npos);
   const RankCorrelationFile file = read_rank_correlation_csv(scratch.file("matrix.csv").string());
@@ -198,22 +174,22 @@ TEST_CASE("correlate: writes the matrix `sample` reads, equal to the library's")
 
 TEST_CASE("correlate: bad ranges and config files are one-line errors") {
   const Scratch scratch("correlate_bad");
-  const Run reversed = scratch.run("correlate --rho-um 0.5 --p-MPa 0.8:0.1");
+  const CliOutcome reversed = scratch.run("correlate --rho-um 0.5 --p-MPa 0.8:0.1");
   CHECK(reversed.exit_code == 2);
   CHECK(reversed.err.find("p-MPa = '0.8:0.1': expected LOW:HIGH with numbers 0 < LOW < HIGH") != std::string::npos);
-  const Run no_rho = scratch.run("correlate");
+  const CliOutcome no_rho = scratch.run("correlate");
   CHECK(no_rho.exit_code == 2);
   CHECK(no_rho.err.find("--rho-um is required") != std::string::npos);
   scratch.file("bad_value.ini", "rho-um = 0.5\n\nE-MPa = 5-200\n");
-  const Run bad_value = scratch.run("correlate --config bad_value.ini");
+  const CliOutcome bad_value = scratch.run("correlate --config bad_value.ini");
   CHECK(bad_value.exit_code == 2);
   CHECK(bad_value.err.find("bad_value.ini:3: E-MPa = '5-200': expected LOW:HIGH") != std::string::npos);
   scratch.file("unknown.ini", "rho-um = 0.5\nturgor = 0.3\n");
-  const Run unknown = scratch.run("correlate --config unknown.ini");
+  const CliOutcome unknown = scratch.run("correlate --config unknown.ini");
   CHECK(unknown.exit_code == 2);
   CHECK(unknown.err.find("unknown.ini") != std::string::npos);
   CHECK(unknown.err.find("turgor") != std::string::npos);
-  const Run all_burst = scratch.run("correlate --rho-um 0.5 --p-MPa 1.5:2 --E-MPa 1:2 --samples 100");
+  const CliOutcome all_burst = scratch.run("correlate --rho-um 0.5 --p-MPa 1.5:2 --E-MPa 1:2 --samples 100");
   CHECK(all_burst.exit_code == 2);
   CHECK(all_burst.err.find("0 of 100 drawn tubes hold their turgor") != std::string::npos);
 }

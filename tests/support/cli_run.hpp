@@ -28,7 +28,7 @@ inline CliOutcome outcome_in(const std::filesystem::path& directory, int wait_st
 // Runs `growthuq <arguments>` (shell words) in `directory`, stdout and stderr going to
 // stdout.txt and stderr.txt there.
 inline CliOutcome run_cli(const std::string& arguments, const std::filesystem::path& directory) {
-  const std::string command = "cd '" + directory.string() + "' && " + std::string(GROWTHUQ_CLI) + " " + arguments +
+  const std::string command = "cd '" + directory.string() + "' && '" + std::string(GROWTHUQ_CLI) + "' " + arguments +
                               " >stdout.txt 2>stderr.txt";
   return outcome_in(directory, std::system(command.c_str()));
 }
