@@ -106,7 +106,7 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
   settings.progress = pool.is_coordinator() ? choose_progress_mode(options.quiet) : ProgressMode::none;
   std::optional<PreparedCampaign> prepared;
   if (values.count("resume")) {
-    prepared.emplace(resumed(options.resume, pool, settings));
+    prepared.emplace(resumed(options.resume, pool, settings), pool, settings.progress, std::cerr);
   } else {
     // Rank 0 reads the file so that every process validates exactly the same text.
     std::string text;
@@ -118,7 +118,7 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
     Campaign campaign = parse_campaign(text, options.campaign);
     const CampaignOverrides overrides = overrides_of(options, values);
     apply_overrides(campaign, overrides);
-    prepared.emplace(std::move(campaign));
+    prepared.emplace(std::move(campaign), pool, settings.progress, std::cerr);
     settings.command_line = command_line_of(arguments);
     if (!options.no_checkpoint) {
       settings.checkpointing = Checkpointing::start;
