@@ -17,6 +17,7 @@
 #include "growthuq/campaign/campaign_report.hpp"
 #include "growthuq/campaign/checkpoint.hpp"
 #include "growthuq/campaign/csv_results.hpp"
+#include "growthuq/campaign/data_uncertainty.hpp"
 #include "growthuq/campaign/raw_data_outputs.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -149,12 +150,13 @@ class OutputObserver final : public RunObserver {
     });
   }
 
-  void finish(const CampaignOutcome& outcome, const OutputSettings& settings, std::ostream& report) {
+  void finish(const CampaignOutcome& outcome, DataUncertaintyResult uncertainty, const OutputSettings& settings,
+              std::ostream& report) {
     wait_for_writer();
     const Campaign& c = campaign_.campaign();
     if (samples_) samples_->finish();
     write_file_atomically(in_directory(c.output_dir, summary_csv_name), summary_csv_text(summaries_), Overwrite::allow);
-    const std::string raw_data_report = write_raw_data_outputs(campaign_, summaries_, h5_ ? &*h5_ : nullptr);
+    const std::string raw_data_report = write_raw_data_outputs(campaign_, summaries_, std::move(uncertainty), h5_ ? &*h5_ : nullptr);
     if (h5_) {
       CampaignMetadata metadata;
       metadata.campaign_text = c.text;
@@ -226,8 +228,10 @@ CampaignOutcome run_campaign_with_outputs(const PreparedCampaign& campaign, Pool
     }
     if (resuming) checkpoint = RunCheckpoint::resume(pool, campaign);
     outcome.run = run_campaign_lines(campaign, pool, observer, checkpoint.get());
+    // All processes run the bootstrap while the coordinator's writer may still write the last line.
+    DataUncertaintyResult uncertainty = estimate_data_uncertainty(campaign, pool, settings.progress, log);
     on_coordinator(pool, [&] {
-      observer.finish(outcome, settings, report);
+      observer.finish(outcome, std::move(uncertainty), settings, report);
       if (checkpoint) checkpoint->remove();
     });
   } catch (const PoolInterrupted& interrupted) {

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "growthuq/campaign/line_source.hpp"
+#include "growthuq/campaign/shared_raw_fits.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/units.hpp"
 #include "growthuq/growth/kappa.hpp"
@@ -77,7 +78,12 @@ std::uint64_t physics_correlation_seed(std::uint64_t campaign_seed, std::string_
   return derive_key(derive_key(mix64(campaign_seed), line), "physics_correlation");
 }
 
-PreparedCampaign::PreparedCampaign(Campaign campaign)
+PreparedCampaign::PreparedCampaign(Campaign campaign) : PreparedCampaign(std::move(campaign), nullptr, ProgressMode::none, nullptr) {}
+
+PreparedCampaign::PreparedCampaign(Campaign campaign, Pool& pool, ProgressMode progress, std::ostream& log)
+    : PreparedCampaign(std::move(campaign), &pool, progress, &log) {}
+
+PreparedCampaign::PreparedCampaign(Campaign campaign, Pool* pool, ProgressMode progress, std::ostream* log)
     : campaign_(std::move(campaign)),
       turgor_(campaign_.instrument, campaign_.path),
       growth_(GrowthParameters{campaign_.yield_pressure, 1.0}),
@@ -88,7 +94,8 @@ PreparedCampaign::PreparedCampaign(Campaign campaign)
   for (const CampaignLine& campaign_line : campaign_.lines) {
     PreparedLine line;
     line.campaign_line = campaign_line;
-    line.distributions = load_line_distributions(campaign_line, campaign_.instrument, line.raw_fit);
+    const CurveFitter fit_curves = pool != nullptr ? shared_curve_fitter(*pool, campaign_line.name, progress, *log) : CurveFitter();
+    line.distributions = load_line_distributions(campaign_line, campaign_.instrument, line.raw_fit, fit_curves);
     const std::vector<std::string> inputs = variable_names(line.distributions);
     try {
       line.plan = plan_evaluation(available, inputs, campaign_.outputs);

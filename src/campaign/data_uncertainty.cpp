@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 
@@ -44,6 +46,41 @@ LineDistributions with_laws(const LineDistributions& design_variables, const Lin
   return result;
 }
 
+// One output of a line in a replicate: a design variable (its column of the design) or a
+// computed output (its block of evaluate_chunk's values), in the campaign's output order.
+struct ReplicateOutput {
+  std::string quantity;
+  std::optional<std::size_t> input;     // index into the line's design variables
+  std::optional<std::size_t> computed;  // index into computed_outputs()
+};
+
+// The outputs a line has (the campaign's outputs that are its design variables or are computed),
+// the same for every replicate: a replicate changes the laws, not the variables.
+std::vector<ReplicateOutput> replicate_outputs(const PreparedCampaign& campaign, const PreparedLine& line) {
+  const std::vector<std::string>& computed = campaign.computed_outputs();
+  const auto& variables = line.design_variables.variables;
+  std::vector<ReplicateOutput> outputs;
+  for (const std::string& output : campaign.campaign().outputs) {
+    const auto input = std::find_if(variables.begin(), variables.end(), [&](const LineVariable& v) { return v.name == output; });
+    if (input != variables.end()) {
+      outputs.push_back({output, static_cast<std::size_t>(input - variables.begin()), std::nullopt});
+      continue;
+    }
+    const auto computed_index = std::find(computed.begin(), computed.end(), output);
+    if (computed_index != computed.end()) {
+      outputs.push_back({output, std::nullopt, static_cast<std::size_t>(computed_index - computed.begin())});
+    }
+  }
+  return outputs;
+}
+
+// The unit of an output of `line` in summary.csv: the variable's for a design variable, the
+// quantity's default for a computed output.
+const Unit& output_unit(const PreparedLine& line, const ReplicateOutput& output) {
+  if (output.input) return *line.design_variables.variables[*output.input].unit;
+  return find_unit(find_quantity(output.quantity)->default_unit, "quantity table", output.quantity);
+}
+
 struct ReplicateLine {
   std::vector<ResultColumn> outputs;  // the campaign's outputs this line has, in campaign order
   std::vector<SampleStatus> status;
@@ -58,27 +95,22 @@ ReplicateLine evaluate_replicate_line(const PreparedCampaign& campaign, const Pr
   options.position = c.stratum_position;
   const LineDesign design = sample_line(line.design_variables, options, line.correlation ? &*line.correlation : nullptr);
   const std::vector<double> values = campaign.evaluate_chunk(line, design, ChunkRange{0, samples});
-  const std::vector<std::string>& computed = campaign.computed_outputs();
+  const std::size_t computed = campaign.computed_outputs().size();
   ReplicateLine result;
   for (std::size_t i = 0; i < samples; ++i) {
-    result.status.push_back(static_cast<SampleStatus>(static_cast<int>(values[computed.size() * samples + i])));
+    result.status.push_back(static_cast<SampleStatus>(static_cast<int>(values[computed * samples + i])));
   }
-  for (const std::string& output : c.outputs) {
-    const auto& variables = line.design_variables.variables;
-    const auto input = std::find_if(variables.begin(), variables.end(), [&](const LineVariable& v) { return v.name == output; });
-    if (input != variables.end()) {
-      result.outputs.push_back(ResultColumn{output, input->unit, true,
-                                            design.values[static_cast<std::size_t>(input - variables.begin())]});
+  for (const ReplicateOutput& output : replicate_outputs(campaign, line)) {
+    const Unit& unit = output_unit(line, output);
+    if (output.input) {
+      result.outputs.push_back(ResultColumn{output.quantity, &unit, true, design.values[*output.input]});
       continue;
     }
-    const auto computed_index = std::find(computed.begin(), computed.end(), output);
-    if (computed_index == computed.end()) continue;
-    const Unit& unit = find_unit(find_quantity(output)->default_unit, "quantity table", output);
-    const std::size_t o = static_cast<std::size_t>(computed_index - computed.begin());
+    const std::size_t o = *output.computed;
     LargeVector<double> column(values.begin() + static_cast<std::ptrdiff_t>(o * samples),
                                values.begin() + static_cast<std::ptrdiff_t>((o + 1) * samples));
     for (double& value : column) value /= unit.to_si;
-    result.outputs.push_back(ResultColumn{output, &unit, false, std::move(column)});
+    result.outputs.push_back(ResultColumn{output.quantity, &unit, false, std::move(column)});
   }
   return result;
 }
@@ -140,68 +172,140 @@ std::vector<std::vector<QuantitySummary>> replicate_summaries(const PreparedCamp
   return summaries;
 }
 
+// Summary rows of the bootstrap: one per line (run order) and output the line has, as every
+// replicate's summaries hold them.
+struct LayoutRow {
+  std::string line;
+  std::string quantity;
+  std::string unit;
+};
+
+std::vector<LayoutRow> bootstrap_layout(const PreparedCampaign& campaign) {
+  std::vector<LayoutRow> rows;
+  for (const PreparedLine& line : campaign.lines()) {
+    for (const ReplicateOutput& output : replicate_outputs(campaign, line)) {
+      rows.push_back({line.campaign_line.name, output.quantity, std::string(output_unit(line, output).symbol)});
+    }
+  }
+  return rows;
+}
+
+// Replicate b as numbers, for the pool: 1 and its medians in layout order, or 0 and the
+// reason it failed (character codes).
+std::vector<double> replicate_numbers(const PreparedCampaign& campaign, std::uint64_t key, std::size_t samples) {
+  std::vector<double> numbers{1.0};
+  try {
+    for (const std::vector<QuantitySummary>& line : replicate_summaries(campaign, key, samples)) {
+      for (const QuantitySummary& row : line) numbers.push_back(row.median);
+    }
+  } catch (const InputError& error) {
+    const std::string reason = error.what();
+    numbers.assign(1, 0.0);
+    for (const char c : reason) numbers.push_back(static_cast<double>(static_cast<unsigned char>(c)));
+  }
+  return numbers;
+}
+
+// The rows of the bootstrap from every replicate's numbers (in order of b), as one process
+// would have found them replicate after replicate.
+DataUncertaintyResult summarize_replicates(const PreparedCampaign& campaign, const std::vector<std::vector<double>>& replicates) {
+  const Campaign& c = campaign.campaign();
+  const std::size_t samples = c.data_uncertainty.samples > 0 ? c.data_uncertainty.samples : c.samples;
+  const std::vector<LayoutRow> layout = bootstrap_layout(campaign);
+  DataUncertaintyResult result;
+  std::vector<std::vector<double>> medians(layout.size());  // [row][replicate]
+  std::size_t succeeded = 0;
+  for (std::size_t b = 0; b < replicates.size(); ++b) {
+    const std::vector<double>& numbers = replicates[b];
+    if (numbers.front() == 0.0) {
+      if (result.failures.size() < 5) {
+        std::string reason;
+        for (std::size_t i = 1; i < numbers.size(); ++i) reason += static_cast<char>(static_cast<unsigned char>(numbers[i]));
+        result.failures.push_back("replicate " + std::to_string(b) + ": " + reason);
+      }
+      continue;
+    }
+    if (numbers.size() != layout.size() + 1) throw std::logic_error("a data-uncertainty replicate has the wrong number of medians");
+    ++succeeded;
+    for (std::size_t r = 0; r < layout.size(); ++r) {
+      if (std::isfinite(numbers[r + 1])) medians[r].push_back(numbers[r + 1]);
+    }
+  }
+  if (succeeded == 0) {
+    throw InputError(c.path, "[data_uncertainty]: every one of " + std::to_string(replicates.size()) +
+                                 " replicates failed (" + (result.failures.empty() ? std::string() : result.failures.front()) + ")");
+  }
+  for (std::size_t r = 0; r < layout.size(); ++r) {
+    DataUncertainty row;
+    row.line = layout[r].line;
+    row.quantity = layout[r].quantity;
+    row.unit = layout[r].unit;
+    row.samples = samples;
+    std::vector<double>& values = medians[r];
+    row.replicate_medians = values;
+    row.replicates = values.size();
+    row.failed = replicates.size() - values.size();
+    if (values.size() >= 2) {
+      std::sort(values.begin(), values.end());
+      row.low = sorted_quantile(values, 0.025);
+      row.high = sorted_quantile(values, 0.975);
+      double mean = 0.0;
+      for (const double v : values) mean += v;
+      mean /= static_cast<double>(values.size());
+      double squares = 0.0;
+      for (const double v : values) squares += (v - mean) * (v - mean);
+      row.sd = std::sqrt(squares / static_cast<double>(values.size() - 1));
+    }
+    result.rows.push_back(row);
+  }
+  return result;
+}
+
 }  // namespace
 
-DataUncertaintyResult estimate_data_uncertainty(const PreparedCampaign& campaign) {
+DataUncertaintyResult estimate_data_uncertainty(const PreparedCampaign& campaign, Pool& pool, ProgressMode progress,
+                                                std::ostream& log) {
   const Campaign& c = campaign.campaign();
-  DataUncertaintyResult result;
   const std::size_t replicates = c.data_uncertainty.replicates;
-  if (replicates == 0) return result;
+  if (replicates == 0) return {};
   const std::size_t samples = c.data_uncertainty.samples > 0 ? c.data_uncertainty.samples : c.samples;
   const std::uint64_t root = derive_key(mix64(c.seed), "data_uncertainty");
 
-  std::vector<std::vector<QuantitySummary>> layout;      // rows of the first successful replicate
-  std::vector<std::vector<std::vector<double>>> medians;  // [line][output][replicate]
-  std::size_t failed_replicates = 0;
-  for (std::size_t b = 0; b < replicates; ++b) {
-    std::vector<std::vector<QuantitySummary>> summaries;
-    try {
-      summaries = replicate_summaries(campaign, counter_bits(root, b), samples);
-    } catch (const InputError& error) {
-      ++failed_replicates;
-      if (result.failures.size() < 5) result.failures.push_back("replicate " + std::to_string(b) + ": " + error.what());
-      continue;
-    }
-    if (layout.empty()) {
-      layout = summaries;
-      for (const auto& line : summaries) medians.emplace_back(line.size());
-    }
-    for (std::size_t l = 0; l < summaries.size(); ++l) {
-      for (std::size_t q = 0; q < summaries[l].size() && q < medians[l].size(); ++q) {
-        if (std::isfinite(summaries[l][q].median)) medians[l][q].push_back(summaries[l][q].median);
-      }
-    }
-  }
-  for (std::size_t l = 0; l < layout.size(); ++l) {
-    for (std::size_t q = 0; q < layout[l].size(); ++q) {
-      DataUncertainty row;
-      row.line = layout[l][q].line;
-      row.quantity = layout[l][q].quantity;
-      row.unit = layout[l][q].unit;
-      row.samples = samples;
-      std::vector<double>& values = medians[l][q];
-      row.replicate_medians = values;
-      row.replicates = values.size();
-      row.failed = replicates - values.size();
-      if (values.size() >= 2) {
-        std::sort(values.begin(), values.end());
-        row.low = sorted_quantile(values, 0.025);
-        row.high = sorted_quantile(values, 0.975);
-        double mean = 0.0;
-        for (const double v : values) mean += v;
-        mean /= static_cast<double>(values.size());
-        double squares = 0.0;
-        for (const double v : values) squares += (v - mean) * (v - mean);
-        row.sd = std::sqrt(squares / static_cast<double>(values.size() - 1));
-      }
-      result.rows.push_back(row);
-    }
-  }
-  if (layout.empty() && failed_replicates > 0) {
-    throw InputError(c.path, "[data_uncertainty]: every one of " + std::to_string(replicates) +
-                                 " replicates failed (" + (result.failures.empty() ? std::string() : result.failures.front()) + ")");
-  }
+  // One replicate per chunk (tens of milliseconds each): the pool hands them out as processes
+  // become free, and replicate b's key depends on b alone.
+  std::vector<std::vector<double>> numbers(replicates);  // rank 0: each replicate's numbers
+  StepProgress shown(pool.is_coordinator() ? progress : ProgressMode::none, log, "data uncertainty", "replicate", replicates);
+  pool.run(
+      replicates, 1,
+      [&](ChunkRange range) {
+        std::vector<double> values;
+        for (std::size_t b = range.begin; b < range.end; ++b) {
+          const std::vector<double> replicate = replicate_numbers(campaign, counter_bits(root, b), samples);
+          values.push_back(static_cast<double>(replicate.size()));
+          values.insert(values.end(), replicate.begin(), replicate.end());
+        }
+        return values;
+      },
+      [&](ChunkRange range, std::span<const double> values) {
+        std::size_t at = 0;
+        for (std::size_t b = range.begin; b < range.end; ++b) {
+          const auto size = static_cast<std::size_t>(values[at]);
+          numbers[b].assign(values.begin() + static_cast<std::ptrdiff_t>(at + 1),
+                            values.begin() + static_cast<std::ptrdiff_t>(at + 1 + size));
+          at += 1 + size;
+        }
+        shown.advance(range.end - range.begin);
+      });
+  shown.finish();
+
+  DataUncertaintyResult result;
+  on_coordinator(pool, [&] { result = summarize_replicates(campaign, numbers); });
   return result;
+}
+
+DataUncertaintyResult estimate_data_uncertainty(const PreparedCampaign& campaign) {
+  const std::unique_ptr<Pool> pool = make_serial_pool();
+  return estimate_data_uncertainty(campaign, *pool, ProgressMode::none, std::cerr);
 }
 
 }  // namespace growthuq

@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <utility>
 
 namespace growthuq {
 namespace {
@@ -20,6 +22,13 @@ std::string duration_text(double seconds) {
   char text[32];
   std::snprintf(text, sizeof text, "%ld:%02ld", whole / 60, whole % 60);
   return text;
+}
+
+// "[#########.....................] " for a fraction done.
+std::string bar_of(double fraction) {
+  constexpr int width = 30;
+  const int filled = static_cast<int>(std::clamp(fraction, 0.0, 1.0) * width);
+  return "[" + std::string(static_cast<std::size_t>(filled), '#') + std::string(static_cast<std::size_t>(width - filled), '.') + "] ";
 }
 
 double seconds_between(std::chrono::steady_clock::time_point from, std::chrono::steady_clock::time_point to) {
@@ -83,6 +92,49 @@ void Progress::draw_bar(bool force) {
   out_ << "\r\033[K[" << std::string(static_cast<std::size_t>(filled), '#')
        << std::string(static_cast<std::size_t>(width - filled), '.') << "] " << done_ << "/" << total_ << " samples  "
        << line_ << "  " << rate_text(rate) << "/s  left " << duration_text(left) << std::flush;
+}
+
+StepProgress::StepProgress(ProgressMode mode, std::ostream& out, std::string label, std::string item, std::size_t total)
+    : mode_(mode), out_(out), label_(std::move(label)), item_(std::move(item)), total_(total) {
+  if (mode_ == ProgressMode::bar) out_ << "\r\033[K" << bar_of(0.0) << status(start_) << std::flush;
+}
+
+void StepProgress::advance(std::size_t items) {
+  done_ += items;
+  if (mode_ == ProgressMode::none) return;
+  const Clock::time_point now = Clock::now();
+  // A bar is redrawn at most ten times a second; a log gets a line every five seconds, so a
+  // long step shows it is alive without filling the log.
+  const double interval = mode_ == ProgressMode::bar ? 0.1 : 5.0;
+  if (seconds_between(last_draw_, now) < interval) return;
+  last_draw_ = now;
+  if (mode_ == ProgressMode::bar) {
+    const double fraction = total_ == 0 ? 1.0 : static_cast<double>(done_) / static_cast<double>(total_);
+    out_ << "\r\033[K" << bar_of(fraction) << status(now) << std::flush;
+  } else {
+    out_ << status(now) << "\n" << std::flush;
+  }
+}
+
+void StepProgress::finish() {
+  if (mode_ == ProgressMode::none) return;
+  if (mode_ == ProgressMode::bar) out_ << "\r\033[K";
+  char timing[64];
+  std::snprintf(timing, sizeof timing, "%.3g s", seconds_between(start_, Clock::now()));
+  out_ << label_ << ": " << done_ << " " << item_ << (done_ == 1 ? "" : "s") << " in " << timing << "\n" << std::flush;
+}
+
+std::string StepProgress::status(Clock::time_point now) const {
+  const double elapsed = seconds_between(start_, now);
+  char text[64];
+  std::snprintf(text, sizeof text, ", %.0f s", elapsed);
+  std::string line = label_ + ": " + item_ + " " + std::to_string(done_) + "/" + std::to_string(total_) + text;
+  if (done_ > 0 && done_ < total_) {
+    const double left = elapsed / static_cast<double>(done_) * static_cast<double>(total_ - done_);
+    std::snprintf(text, sizeof text, ", about %.0f s left", left);
+    line += text;
+  }
+  return line;
 }
 
 }  // namespace growthuq

@@ -181,7 +181,7 @@ std::string data_uncertainty_csv_text(std::span<const DataUncertainty> rows) {
 }
 
 std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<const QuantitySummary> summaries,
-                                   ResultsH5Writer* h5) {
+                                   DataUncertaintyResult uncertainty, ResultsH5Writer* h5) {
   const Campaign& c = campaign.campaign();
   std::string report;
   for (const PreparedLine& line : campaign.lines()) {
@@ -194,7 +194,6 @@ std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<c
   }
 
   const std::string csv_path = (std::filesystem::path(c.output_dir) / data_uncertainty_csv_name).string();
-  DataUncertaintyResult uncertainty = estimate_data_uncertainty(campaign);
   if (uncertainty.rows.empty()) {
     std::error_code ignored;  // a --force rerun without the bootstrap leaves no stale file behind
     std::filesystem::remove(csv_path, ignored);

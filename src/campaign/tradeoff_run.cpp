@@ -60,7 +60,7 @@ std::vector<TradeoffRun> run_tradeoff(const Campaign& campaign, std::span<const 
   // times, which are what the trade is about.
   Campaign first = campaign;
   if (!sample_counts.empty()) first.samples = sample_counts.front();
-  PreparedCampaign prepared(std::move(first));
+  PreparedCampaign prepared(std::move(first), pool, progress, log);
   for (const std::size_t samples : sample_counts) {
     if (progress != ProgressMode::none) log << "tradeoff: " << samples << " samples per line\n" << std::flush;
     prepared.set_samples(samples);

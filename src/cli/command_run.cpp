@@ -106,12 +106,12 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
   settings.progress = pool.is_coordinator() ? choose_progress_mode(options.quiet) : ProgressMode::none;
   std::optional<PreparedCampaign> prepared;
   if (values.count("resume")) {
-    prepared.emplace(resumed(options.resume, pool, settings));
+    prepared.emplace(resumed(options.resume, pool, settings), pool, settings.progress, std::cerr);
   } else {
     Campaign campaign = read_campaign_on_pool(options.campaign, pool);
     const CampaignOverrides overrides = overrides_of(options, values);
     apply_overrides(campaign, overrides);
-    prepared.emplace(std::move(campaign));
+    prepared.emplace(std::move(campaign), pool, settings.progress, std::cerr);
     settings.command_line = command_line_of(arguments);
     if (!options.no_checkpoint) {
       settings.checkpointing = Checkpointing::start;

@@ -103,7 +103,7 @@ int run_tradeoff_command(const TradeoffOptions& options, const po::variables_map
     // Everything validated (line files, models, reference line) before any output or sampling.
     Campaign first = campaign;
     first.samples = counts.front();
-    const PreparedCampaign validated(std::move(first));
+    const PreparedCampaign validated(std::move(first), pool, ProgressMode::none, std::cerr);
   }
 
   const std::string csv_path =

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <stdexcept>
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -53,6 +54,11 @@ RelaxationFits fit_curves(const RawLineFile& raw, const RawFitSettings& settings
   relaxation.options.ramp_aware = raw.relaxation.ramp_aware;
   relaxation.options.poisson = settings.poisson;
   relaxation.curves = read_relaxation_curves(raw.relaxation.curves, raw.relaxation.meta, settings.probe_radius);
+  if (settings.fit_curves) {
+    relaxation.fits = settings.fit_curves(relaxation.curves, relaxation.options);
+    if (relaxation.fits.size() != relaxation.curves.size()) throw std::logic_error("curve fitter lost curves of " + raw.name);
+    return relaxation;
+  }
   relaxation.fits.reserve(relaxation.curves.size());
   for (const RelaxationCurve& curve : relaxation.curves) {
     relaxation.fits.push_back(analyze_relaxation_curve(curve, relaxation.options));

@@ -1,22 +1,32 @@
-# Runs the small test campaign once without MPI and once under `mpirun -np PROCESSES`, and
-# requires samples.csv and summary.csv to be identical byte for byte, and results.h5 value for
-# value (its analyses are computed by all processes together; HDF5 stores times, so its bytes
-# differ), when /usr/bin/python3 has h5py: results must not depend on the number of processes.
-# Variables: CLI, MPIEXEC, PROCESSES, CAMPAIGN, WORK, COMPARE (tools/compare_results_h5.py).
+# Runs a test campaign once without MPI and once under `mpirun -np PROCESSES`, and requires
+# samples.csv, summary.csv and (for raw-data lines with a bootstrap) data_uncertainty.csv to be
+# identical byte for byte, and results.h5 value for value (its analyses and raw-data fits are
+# computed by all processes together; HDF5 stores times, so its bytes differ), when
+# /usr/bin/python3 has h5py: results must not depend on the number of processes.
+# Variables: CLI, MPIEXEC, PROCESSES, CAMPAIGN, WORK, COMPARE (tools/compare_results_h5.py);
+# SAMPLES (optional) overrides the campaign's samples per line.
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
-execute_process(COMMAND "${CLI}" run "${CAMPAIGN}" --quiet --formats csv,hdf5 --out "${WORK}/serial"
+set(sample_options)
+if(DEFINED SAMPLES)
+  set(sample_options --samples ${SAMPLES})
+endif()
+execute_process(COMMAND "${CLI}" run "${CAMPAIGN}" --quiet --formats csv,hdf5 ${sample_options} --out "${WORK}/serial"
                 RESULT_VARIABLE serial_result ERROR_VARIABLE serial_error)
 if(NOT serial_result EQUAL 0)
   message(FATAL_ERROR "serial run failed (${serial_result}): ${serial_error}")
 endif()
 execute_process(COMMAND "${MPIEXEC}" -np ${PROCESSES} --oversubscribe "${CLI}" run "${CAMPAIGN}" --quiet --formats csv,hdf5
-                        --out "${WORK}/mpi"
+                        ${sample_options} --out "${WORK}/mpi"
                 RESULT_VARIABLE mpi_result ERROR_VARIABLE mpi_error)
 if(NOT mpi_result EQUAL 0)
   message(FATAL_ERROR "run under mpirun -np ${PROCESSES} failed (${mpi_result}): ${mpi_error}")
 endif()
-foreach(name samples.csv summary.csv)
+set(compared samples.csv summary.csv)
+if(EXISTS "${WORK}/serial/data_uncertainty.csv")
+  list(APPEND compared data_uncertainty.csv)
+endif()
+foreach(name ${compared})
   execute_process(COMMAND "${CMAKE_COMMAND}" -E compare_files "${WORK}/serial/${name}" "${WORK}/mpi/${name}"
                   RESULT_VARIABLE differs)
   if(NOT differs EQUAL 0)

@@ -12,6 +12,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <ostream>
 #include <span>
 #include <string>
 #include <string_view>
@@ -19,6 +20,7 @@
 
 #include "growthuq/campaign/campaign_file.hpp"
 #include "growthuq/campaign/line_result.hpp"
+#include "growthuq/campaign/progress.hpp"
 #include "growthuq/correlation/matrix_file.hpp"
 #include "growthuq/distributions/line_file.hpp"
 #include "growthuq/evaluation/evaluator.hpp"
@@ -52,8 +54,14 @@ struct PreparedLine {
 // The same on every process (pure function of the files), so all processes agree on it.
 class PreparedCampaign {
  public:
-  // InputError naming file, line or key for any problem.
+  // InputError naming file, line or key for any problem. Raw-data lines are fitted here, by
+  // this process alone.
   explicit PreparedCampaign(Campaign campaign);
+  // The same with the raw-data lines' curve fits shared out over the processes of `pool`
+  // (shared_raw_fits.hpp): every process calls it with the same campaign and gets the same
+  // prepared campaign. Progress of the fits on `log` as `progress` says (ProgressMode::none
+  // off rank 0).
+  PreparedCampaign(Campaign campaign, Pool& pool, ProgressMode progress, std::ostream& log);
   PreparedCampaign(const PreparedCampaign&) = delete;
   PreparedCampaign& operator=(const PreparedCampaign&) = delete;
 
@@ -85,6 +93,8 @@ class PreparedCampaign {
   std::vector<double> evaluate_chunk(const PreparedLine& line, const LineDesign& design, ChunkRange range) const;
 
  private:
+  PreparedCampaign(Campaign campaign, Pool* pool, ProgressMode progress, std::ostream* log);
+
   Campaign campaign_;
   ThinShellTurgor turgor_;
   ThinShellModulus modulus_;

@@ -19,10 +19,13 @@
 
 #include <cstddef>
 #include <limits>
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include "growthuq/campaign/campaign_run.hpp"
+#include "growthuq/campaign/progress.hpp"
+#include "growthuq/pool/pool.hpp"
 
 namespace growthuq {
 
@@ -50,7 +53,16 @@ struct DataUncertaintyResult {
 };
 
 // Runs the bootstrap of `campaign` (replicates and samples from its [data_uncertainty]
-// settings; nothing when replicates = 0). Serial; called on the coordinating process.
+// settings; nothing when replicates = 0) with its replicates shared out over the processes of
+// `pool`, handed out one at a time as processes become free. Every process calls it; rank 0
+// gets the result, the others an empty one. The result does not depend on the number of
+// processes (replicate b's seed depends on b alone; rank 0 takes the medians in order of b).
+// InputError on every process when every replicate failed. Progress ("data uncertainty:
+// replicate 120/400, 4 s, about 9 s left") on `log` as `progress` says (none off rank 0).
+DataUncertaintyResult estimate_data_uncertainty(const PreparedCampaign& campaign, Pool& pool, ProgressMode progress,
+                                                std::ostream& log);
+
+// The same by this process alone, without progress.
 DataUncertaintyResult estimate_data_uncertainty(const PreparedCampaign& campaign);
 
 }  // namespace growthuq

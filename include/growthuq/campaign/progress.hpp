@@ -1,6 +1,7 @@
 // Progress of a campaign run on stderr: a bar with samples done, rate and time left when stderr
 // is a terminal; one line per finished plant line otherwise (logs, batch jobs); nothing when
-// the user asked for quiet.
+// the user asked for quiet. The same for the counted steps around the sampling (raw-data curve
+// fits, the data-uncertainty bootstrap).
 #pragma once
 
 #include <chrono>
@@ -42,6 +43,31 @@ class Progress {
   Clock::time_point start_ = Clock::now();
   Clock::time_point line_start_ = start_;
   Clock::time_point last_draw_{};
+};
+
+// Progress of a counted step that is not sampling: "<label>: <item> 120/400, 4 s, about 9 s
+// left" as a bar on a terminal (redrawn at most ten times a second), as such a line every few
+// seconds otherwise; either way "<label>: 400 <item>s in 10.2 s" when done.
+class StepProgress {
+ public:
+  StepProgress(ProgressMode mode, std::ostream& out, std::string label, std::string item, std::size_t total);
+
+  void advance(std::size_t items = 1);
+  // Clears the bar and prints the line with the time the step took.
+  void finish();
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  std::string status(Clock::time_point now) const;
+
+  ProgressMode mode_;
+  std::ostream& out_;
+  std::string label_;
+  std::string item_;
+  std::size_t total_;
+  std::size_t done_ = 0;
+  Clock::time_point start_ = Clock::now();
+  Clock::time_point last_draw_ = start_;
 };
 
 }  // namespace growthuq

@@ -6,6 +6,7 @@
 // whose fit failed (with the reason), the data themselves.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -19,9 +20,17 @@
 
 namespace growthuq {
 
+// Fits a line's relaxation curves: one CurveFit per curve, in the curves' order, each
+// analyze_relaxation_curve(curve, options).
+using CurveFitter =
+    std::function<std::vector<CurveFit>(const std::vector<RelaxationCurve>& curves, const RelaxationOptions& options)>;
+
 struct RawFitSettings {
   std::optional<double> probe_radius;  // m, for curves whose metadata have no rho_um column
   double poisson = 0.2;                // nu of the wall, for E_r(t) (a campaign's instrument value)
+  // Where the curve fits run (most of a raw line's fitting time): one after the other here when
+  // empty; a campaign shares them out over its processes (campaign/shared_raw_fits.hpp).
+  CurveFitter fit_curves;
 };
 
 // One family's attempt: the ML fit, or why it failed (e.g. a non-positive value for a positive law).
