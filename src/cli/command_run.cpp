@@ -42,6 +42,7 @@ struct RunOptions {
 };
 
 constexpr std::string_view location = "growthuq run";
+constexpr std::string_view usage = "CAMPAIGN.ini [options]  |  growthuq run --resume DIR [--quiet]";
 
 CampaignOverrides overrides_of(const RunOptions& options, const po::variables_map& values) {
   CampaignOverrides overrides;
@@ -64,7 +65,7 @@ std::string command_line_of(const Arguments& arguments) {
 void check_resume_options(const RunOptions& options, const po::variables_map& values) {
   const std::string where(location);
   if (!values.count("resume")) {
-    if (options.campaign.empty()) throw InputError(where, "expected a campaign file (growthuq run CAMPAIGN.ini) or --resume DIR");
+    if (options.campaign.empty()) throw missing_argument("run", usage, "the campaign file");
     return;
   }
   if (!options.campaign.empty()) {
@@ -171,7 +172,7 @@ int run_run(const Arguments& arguments) {
   po::positional_options_description positional;
   positional.add("campaign", 1);
   po::variables_map values;
-  if (!parse_arguments(arguments, "run", "CAMPAIGN.ini [options]  |  growthuq run --resume DIR [--quiet]",
+  if (!parse_arguments(arguments, "run", usage,
                        "Runs a campaign: for each plant line, a correlated Latin hypercube design through the\n"
                        "thin-shell and growth models, in chunks over all processes (mpirun -np K growthuq run ...\n"
                        "gives bit-identical results for any K). Writes samples.csv (one row per sample; flagged\n"
