@@ -203,8 +203,19 @@ TEST_CASE("SIGTERM stops a run cleanly; --resume finishes it byte-identical to a
   CHECK(both.exit_code == 2);
   CHECK(both.err.find("not both") != std::string::npos);
 
+  // The campaign file edited since (another seed): the resume finishes the run as started, from
+  // the stored text (the results are the reference's), and says so in one line; --quiet keeps
+  // the progress off stderr.
+  std::string campaign_text = slurp(study.campaign);
+  const std::size_t seed = campaign_text.find("seed = 11\n");
+  REQUIRE(seed != std::string::npos);
+  spit(study.campaign, campaign_text.replace(seed, 10, "seed = 12\n"));
   const Outcome resumed = run_in(work, cli({"run", "--resume", "out", "--quiet"}));
   REQUIRE_MESSAGE(resumed.exit_code == 0, resumed.err);
+  CHECK(resumed.err == "growthuq run: warning: " + study.campaign.string() +
+                           " changed since the run started; resuming with the campaign text stored in " +
+                           (fs::path("out") / "checkpoint" / "manifest.txt").string() +
+                           " (to run the file as it is now, start the run again with --force)\n");
   CHECK(resumed.out == reference.out);
   check_identical(work / "out", study.root / "reference" / "out");
   CHECK_FALSE(fs::exists(work / "out" / "checkpoint"));
@@ -240,8 +251,19 @@ TEST_CASE("after SIGKILL and a torn record, a changed line file is refused; rest
   CHECK(refused.err.find(line.string() + ": changed since the interrupted run") != std::string::npos);
   spit(line, original);
 
-  const Outcome resumed = run_in(work, cli({"run", "--resume", "out", "--quiet"}));
+  // The campaign file gone: a warning, and the stored text is used. Without --quiet (the
+  // interrupted run had it): progress, one line per plant line as stderr is not a terminal;
+  // the results the same.
+  fs::rename(study.campaign, study.root / "moved.ini");
+  const Outcome resumed = run_in(work, cli({"run", "--resume", "out"}));
   REQUIRE_MESSAGE(resumed.exit_code == 0, resumed.err);
+  const std::vector<std::string> progress = split(resumed.err, '\n');
+  REQUIRE(progress.size() == 3);
+  CHECK(progress[0] == "growthuq run: warning: " + study.campaign.string() +
+                           " cannot be read now; resuming with the campaign text stored in " +
+                           (fs::path("out") / "checkpoint" / "manifest.txt").string() +
+                           " (to run the file as it is now, start the run again with --force)");
+  for (std::size_t i = 1; i < 3; ++i) CHECK(progress[i].find(" 100000 samples in ") != std::string::npos);
   CHECK(resumed.out == reference.out);
   check_identical(work / "out", study.root / "reference" / "out");
   CHECK(entries(work / "out") == std::set<std::string>{"samples.csv", "summary.csv", "results.h5"});
@@ -261,6 +283,7 @@ TEST_CASE("a serially interrupted run resumes under mpirun -np 2 to the identica
   const Outcome resumed = run_in(work, {GROWTHUQ_MPIEXEC, "-np", "2", "--oversubscribe", GROWTHUQ_CLI, "run", "--resume", "out", "--quiet"},
                                  environment);
   REQUIRE_MESSAGE(resumed.exit_code == 0, resumed.err);
+  CHECK(resumed.err.find("warning") == std::string::npos);  // the campaign file is as it was
   CHECK(resumed.out == reference.out);
   check_identical(work / "out", study.root / "reference" / "out");
 }
