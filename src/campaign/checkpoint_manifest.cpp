@@ -236,6 +236,16 @@ void verify_manifest(const CheckpointManifest& manifest, const std::string& mani
   }
 }
 
+CampaignFileNow campaign_file_now(const CheckpointManifest& manifest) {
+  try {
+    return detail::read_text_file(locate(manifest, manifest.campaign_path)) == manifest.campaign_text
+               ? CampaignFileNow::unchanged
+               : CampaignFileNow::changed;
+  } catch (const InputError&) {  // removed, renamed or no longer readable
+    return CampaignFileNow::unreadable;
+  }
+}
+
 Campaign resumed_campaign(const CheckpointManifest& manifest, const std::string& output_dir) {
   Campaign campaign = parse_campaign(manifest.campaign_text, locate(manifest, manifest.campaign_path));
   campaign.path = manifest.campaign_path;  // results.h5 stores the path as first given

@@ -42,6 +42,7 @@ struct RunOptions {
 };
 
 constexpr std::string_view location = "growthuq run";
+constexpr std::string_view usage = "CAMPAIGN.ini [options]  |  growthuq run --resume DIR [--quiet]";
 
 CampaignOverrides overrides_of(const RunOptions& options, const po::variables_map& values) {
   CampaignOverrides overrides;
@@ -64,7 +65,7 @@ std::string command_line_of(const Arguments& arguments) {
 void check_resume_options(const RunOptions& options, const po::variables_map& values) {
   const std::string where(location);
   if (!values.count("resume")) {
-    if (options.campaign.empty()) throw InputError(where, "expected a campaign file (growthuq run CAMPAIGN.ini) or --resume DIR");
+    if (options.campaign.empty()) throw missing_argument("run", usage, "the campaign file");
     return;
   }
   if (!options.campaign.empty()) {
@@ -84,13 +85,26 @@ void check_resume_options(const RunOptions& options, const po::variables_map& va
   if (options.no_checkpoint) throw InputError(where, "--no-checkpoint cannot be combined with --resume");
 }
 
+// An edited campaign file does not change a resumed run (it finishes the run as started, from
+// the text stored in the manifest), but the user who edited it should hear so: one line.
+void warn_if_campaign_file_differs(const CheckpointManifest& manifest, const std::string& manifest_path) {
+  const CampaignFileNow now = campaign_file_now(manifest);
+  if (now == CampaignFileNow::unchanged) return;
+  std::cerr << "growthuq run: warning: " << locate(manifest, manifest.campaign_path)
+            << (now == CampaignFileNow::changed ? " changed since the run started" : " cannot be read now")
+            << "; resuming with the campaign text stored in " << manifest_path
+            << " (to run the file as it is now, start the run again with --force)\n";
+}
+
 // The checkpoint's campaign, after rank 0 has checked that nothing it read has changed.
 Campaign resumed(const std::string& directory, Pool& pool, OutputSettings& settings) {
   const std::string manifest_path = checkpoint_manifest_path(directory);
   std::string text;
   on_coordinator(pool, [&] {
     text = read_checkpoint_manifest_text(directory);
-    verify_manifest(parse_manifest(text, manifest_path), manifest_path);
+    const CheckpointManifest manifest = parse_manifest(text, manifest_path);
+    verify_manifest(manifest, manifest_path);
+    warn_if_campaign_file_differs(manifest, manifest_path);
   });
   text = pool.broadcast(text);
   const CheckpointManifest manifest = parse_manifest(text, manifest_path);
@@ -164,7 +178,7 @@ int run_run(const Arguments& arguments) {
   po::positional_options_description positional;
   positional.add("campaign", 1);
   po::variables_map values;
-  if (!parse_arguments(arguments, "run", "CAMPAIGN.ini [options]  |  growthuq run --resume DIR [--quiet]",
+  if (!parse_arguments(arguments, "run", usage,
                        "Runs a campaign: for each plant line, a correlated Latin hypercube design through the\n"
                        "thin-shell and growth models, in chunks over all processes (mpirun -np K growthuq run ...\n"
                        "gives bit-identical results for any K). Writes samples.csv (one row per sample; flagged\n"
@@ -178,7 +192,8 @@ int run_run(const Arguments& arguments) {
                        "kept chunks survive even that), writes no result file, keeps DIR and exits with 130 or\n"
                        "143; 'growthuq run --resume DIR' (any number of processes) then evaluates only the rest\n"
                        "and writes results byte-identical to an uninterrupted run. It refuses to resume when a\n"
-                       "line or matrix file changed since, or with options that would change the results.",
+                       "line or matrix file changed since, or with options that would change the results. It uses\n"
+                       "the campaign text stored in the checkpoint, with a warning if the campaign file was edited.",
                        described, positional, values)) {
     return 0;
   }

@@ -93,7 +93,7 @@ int run_synth(const Arguments& arguments) {
   SynthOptions options;
   po::options_description described("options");
   described.add_options()
-      ("line", po::value(&options.lines)->required()->multitoken(), "TRUE distributions: line files (distributions/<line>.ini)")
+      ("line", po::value(&options.lines)->required()->multitoken(), "line files of the TRUE distributions (distributions/<line>.ini)")
       ("out", po::value(&options.out)->required(), "output folder; each line's files go to OUT/<line name>/")
       ("seed", po::value(&options.seed)->default_value(options.seed), "seed, 0 to 2^64 - 1; a line's files depend only on it, the line's name and its truth")
       ("tubes", po::value(&options.tubes)->default_value(options.tubes), "tubes per table and line, drawn uniformly in low:high")

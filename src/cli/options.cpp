@@ -1,10 +1,52 @@
 #include "options.hpp"
 
+#include <algorithm>
 #include <iostream>
+#include <vector>
 
 #include "growthuq/core/error.hpp"
 
 namespace growthuq::cli {
+namespace {
+
+// The names of the positional arguments, in order (an unlimited last one once).
+std::vector<std::string> positional_names(const po::positional_options_description& positional) {
+  std::vector<std::string> names;
+  for (unsigned position = 0; position < positional.max_total_count(); ++position) {
+    const std::string& name = positional.name_for_position(position);
+    if (std::find(names.begin(), names.end(), name) != names.end()) break;  // the repeated last one
+    names.push_back(name);
+  }
+  return names;
+}
+
+// "campaign file (INI; ...)" -> "campaign file": what the argument is, without the details.
+std::string_view first_clause(std::string_view description) {
+  return description.substr(0, std::min({description.find(" ("), description.find(':'), description.find(';')}));
+}
+
+// A positional argument declared required() that the command line does not give.
+const po::option_description* missing_positional(const po::options_description& options,
+                                                 const po::positional_options_description& positional,
+                                                 const po::variables_map& values) {
+  for (const std::string& name : positional_names(positional)) {
+    const po::option_description* option = options.find_nothrow(name, false);
+    if (option != nullptr && option->semantic()->is_required() && !values.count(name)) return option;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+InputError missing_argument(std::string_view command, std::string_view usage, std::string_view what) {
+  const std::string name(command);
+  return InputError("growthuq " + name, "missing " + std::string(what) + ": growthuq " + name + " " + std::string(usage) +
+                                            " (see growthuq " + name + " --help)");
+}
+
+InputError missing_argument(std::string_view command, std::string_view usage, const po::option_description& argument) {
+  return missing_argument(command, usage, "the " + std::string(first_clause(argument.description())));
+}
 
 bool parse_arguments(const Arguments& arguments, std::string_view command, std::string_view usage,
                      std::string_view description, po::options_description options,
@@ -18,7 +60,14 @@ bool parse_arguments(const Arguments& arguments, std::string_view command, std::
                 << options << "\n";
       return false;
     }
+    // Before notify(), whose "the option '--campaign' is required but missing" names an option
+    // the user never types and comes in alphabetical order, not the order of the usage.
+    if (const po::option_description* argument = missing_positional(options, positional, values)) {
+      throw missing_argument(command, usage, *argument);
+    }
     po::notify(values);
+  } catch (const po::required_option& error) {
+    throw missing_argument(command, usage, error.get_option_name());
   } catch (const po::error& error) {
     throw InputError("growthuq " + std::string(command), std::string(error.what()) +
                                                              " (see growthuq " + std::string(command) + " --help)");

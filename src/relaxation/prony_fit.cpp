@@ -5,6 +5,7 @@
 
 #include "core/gsl_errors.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <iomanip>
@@ -194,17 +195,28 @@ void validate(std::span<const double> t, std::span<const double> y, const PronyF
   }
 }
 
+// The extra parameter's search interval [min, max]. The projected residual may not depend on it
+// at all up to `flat_end` (the ramp-aware fit's ramp end before the first sample, see
+// fit_ramp_hold): a minimum found there is reported at the middle of [min, min(max, flat_end)],
+// not wherever the search happened to stop.
+struct ExtraParameter {
+  double min = 0.0;
+  double max = 0.0;
+  double flat_end = -std::numeric_limits<double>::infinity();
+};
+
 PronyFit fit(const Basis& basis, std::span<const double> values, const PronyFitOptions& options,
-             double extra_min = 0.0, double extra_max = 0.0) {
+             const ExtraParameter& extra = {}) {
   const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
   Problem problem{&basis, &y, static_cast<std::size_t>(options.terms), std::log(options.tau_min), std::log(options.tau_max),
-                  1.0 / std::max(y.squaredNorm(), 1e-300), extra_min, extra_max};
+                  1.0 / std::max(y.squaredNorm(), 1e-300), extra.min, extra.max};
 
   Minimum best;
   for (const auto& start : starting_points(options.terms, problem.log_min, problem.log_max)) {
     Minimum candidate = minimize_from(start, problem);
     if (candidate.objective < best.objective) best = candidate;
   }
+  if (best.extra <= extra.flat_end) best.extra = 0.5 * (extra.min + std::min(extra.max, extra.flat_end));
 
   const Eigen::MatrixXd columns = basis(best.tau, best.extra);
   const Projection projection = project(columns, y);
@@ -303,10 +315,22 @@ PronyFit fit_ramp_hold(std::span<const double> t, std::span<const double> force,
   if (!(ramp_time_min >= 0.0) || !(ramp_time_max >= ramp_time_min) || !(indentation > 0.0)) {
     throw InputError("fit_ramp_hold", "expected 0 <= ramp_time_min <= ramp_time_max and indentation > 0");
   }
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!(t[i] >= 0.0) || (i > 0 && !(t[i] > t[i - 1]))) {
+      throw InputError("fit_ramp_hold", "times must be increasing and >= 0 (from contact, the start of the ramp)");
+    }
+  }
   const Basis basis = [t, indentation](const std::vector<double>& tau, double ramp_time) {
     return maxwell_mode_responses(tau, ramp_time, indentation, t);
   };
-  return fit(basis, force, options, ramp_time_min, ramp_time_max);
+  // A ramp that ends by the first sample after contact leaves no sample inside it: every hold
+  // column is then delta exp(-t / tau_i) times (tau_i / t_r)(exp(t_r / tau_i) - 1), a factor
+  // the amplitude absorbs, so the residual is the same for every such ramp end (to the
+  // integrator's tolerance) and the data cannot tell them apart.
+  ExtraParameter ramp_end{ramp_time_min, ramp_time_max};
+  const auto first_after_contact = std::find_if(t.begin(), t.end(), [](double time) { return time > 0.0; });
+  if (first_after_contact != t.end()) ramp_end.flat_end = *first_after_contact;
+  return fit(basis, force, options, ramp_end);
 }
 
 }  // namespace growthuq

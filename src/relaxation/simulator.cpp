@@ -19,24 +19,29 @@ namespace {
 
 // The Maxwell modes' ODE, dF_i/dt = k_i du/dt - F_i / tau_i, with du/dt = rate during the
 // ramp and 0 during the hold. States are F_i / scale so that CVODE's absolute tolerance is
-// relative to the force scale of the problem.
+// relative to the force scale of the problem. The integrator's variable is s = t /
+// seconds_per_unit: the ramp-aware fit's basis runs its ramp in s = t / ramp_time from 0 to 1,
+// dF_i/ds = k_i d(u / scale)/ds - F_i ramp_time / tau_i, which stays well posed as the ramp
+// time goes to 0 (the step is its limit) where du/dt would not.
 struct ModeEquations {
   std::vector<double> k;
   std::vector<double> tau;
   double k_inf = 0.0;
-  double rate = 0.0;
+  double rate = 0.0;              // du/dt during the ramp (m/s), for the set-point root
   double scale = 1.0;
-  double set_point = 0.0;  // root target during the ramp (N)
-  bool ramping = true;
+  double set_point = 0.0;         // root target during the ramp (N)
+  double drive = 0.0;             // d(u / scale)/ds: rate / scale during a ramp in seconds, 0 in the hold
+  double seconds_per_unit = 1.0;  // of the integrator's variable s
 };
 
 int mode_rhs(sunrealtype, N_Vector y, N_Vector ydot, void* data) {
   const auto& equations = *static_cast<const ModeEquations*>(data);
   const double* state = N_VGetArrayPointer(y);
   double* derivative = N_VGetArrayPointer(ydot);
-  const double drive = equations.ramping ? equations.rate / equations.scale : 0.0;
+  // tau_i / seconds_per_unit: exactly tau_i in seconds (the simulator's arithmetic), +inf
+  // for a ramp of length 0 (no relaxation during it).
   for (std::size_t i = 0; i < equations.k.size(); ++i) {
-    derivative[i] = equations.k[i] * drive - state[i] / equations.tau[i];
+    derivative[i] = equations.k[i] * equations.drive - state[i] / (equations.tau[i] / equations.seconds_per_unit);
   }
   return 0;
 }
@@ -63,6 +68,7 @@ class ModeIntegrator {
     N_VConst(0.0, state_);
     memory_ = CVodeCreate(CV_BDF, context_);
     if (memory_ == nullptr) throw std::runtime_error("CVODE: CVodeCreate failed");
+    check(CVodeSetErrHandlerFn(memory_, keep_message, &cvode_message_), "CVodeSetErrHandlerFn");
     check(CVodeInit(memory_, mode_rhs, 0.0, state_), "CVodeInit");
     check(CVodeSetUserData(memory_, &equations_), "CVodeSetUserData");
     // rtol 1e-10 on forces of order 1 after scaling: far below the 1e-4 noise of measured curves.
@@ -84,9 +90,11 @@ class ModeIntegrator {
     stop_time_ = t;
   }
 
-  // Switches to the hold at time t (the states are continuous; only du/dt changes).
+  // Switches to the hold at time t in seconds (the states are continuous; only du/dt
+  // changes, and the integrator's variable is the time in seconds from here on).
   void start_hold(double t) {
-    equations_.ramping = false;
+    equations_.drive = 0.0;
+    equations_.seconds_per_unit = 1.0;
     check(CVodeReInit(memory_, t, state_), "CVodeReInit");
     check(CVodeRootInit(memory_, 0, nullptr), "CVodeRootInit");
     // SUNDIALS 6.4 keeps a stop time across CVodeReInit and has no CVodeClearStopTime.
@@ -98,6 +106,15 @@ class ModeIntegrator {
   // Advances to `until` or to an earlier root or stop time; returns CVODE's flag.
   int advance(double until) {
     if (until <= time_) return CV_SUCCESS;
+    // CVODE cannot start from (re)initialization towards an output time closer than its time
+    // resolution (cvHin in cvode.c: |tout - t0| < 2 uround max(|t0|, |tout|) is "tout too close
+    // to t0"), e.g. a sample a few ulps after a fitted ramp end. Over such an interval every
+    // F_i changes by F_i |tout - t0| / tau_i, a few ulps of t / tau_i: far below the tolerance,
+    // so the state is kept.
+    if (until - time_ <= 4.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(time_), std::abs(until))) {
+      time_ = until;
+      return CV_SUCCESS;
+    }
     // With a stop time CVODE may already have stepped exactly to it while returning an earlier
     // output; asking again would be an error ("tstop behind current t"), so interpolate.
     double internal_time = 0.0;
@@ -123,8 +140,14 @@ class ModeIntegrator {
   double mode(std::size_t i) const { return N_VGetArrayPointer(state_)[i] * equations_.scale; }
 
  private:
-  static void check(int flag, const char* call) {
-    if (flag < 0) throw std::runtime_error(std::string("CVODE: ") + call + " failed with flag " + std::to_string(flag));
+  // CVODE's own messages would go to stderr as several lines; they go into the exception.
+  static void keep_message(int, const char*, const char*, char* message, void* data) {
+    *static_cast<std::string*>(data) = message;
+  }
+  void check(int flag, const char* call) const {
+    if (flag >= 0) return;
+    throw std::runtime_error(std::string("CVODE: ") + call + " failed with flag " + std::to_string(flag) +
+                             (cvode_message_.empty() ? std::string() : " (" + cvode_message_ + ")"));
   }
 
   ModeEquations& equations_;
@@ -133,6 +156,7 @@ class ModeIntegrator {
   void* memory_ = nullptr;
   double time_ = 0.0;
   double stop_time_ = std::numeric_limits<double>::infinity();
+  std::string cvode_message_;
 };
 
 void require_positive(double value, const char* key) {
@@ -184,7 +208,9 @@ SimulatedCurve simulate_ramp_hold(const MaxwellModel& model, const RampHoldProto
     throw InputError("simulate_ramp_hold", "the ramp would need more than 1e8 samples at this sampling interval");
   }
 
-  ModeEquations equations{model.k, model.tau, model.k_inf, protocol.rate, protocol.set_point, protocol.set_point, true};
+  ModeEquations equations{model.k,           model.tau,          model.k_inf,
+                          protocol.rate,     protocol.set_point, protocol.set_point,
+                          protocol.rate / protocol.set_point, 1.0};
   ModeIntegrator integrator(equations);
   integrator.find_set_point();
 
@@ -231,31 +257,25 @@ Eigen::MatrixXd maxwell_mode_responses(std::span<const double> tau, double ramp_
   const auto rows = static_cast<Eigen::Index>(t.size());
   const auto modes = static_cast<Eigen::Index>(tau.size());
   Eigen::MatrixXd basis(rows, modes + 1);
-  for (Eigen::Index r = 0; r < rows; ++r) {
-    basis(r, 0) = ramp_time > 0.0 ? indentation * std::min(t[static_cast<std::size_t>(r)] / ramp_time, 1.0) : indentation;
-  }
+  // u = indentation min(t / ramp_time, 1), and u(0) = 0 also for ramp_time = 0 (contact), the
+  // limit of ever shorter ramps.
+  auto ramp_fraction = [ramp_time](double time) { return time < ramp_time ? time / ramp_time : (time > 0.0 ? 1.0 : 0.0); };
+  for (Eigen::Index r = 0; r < rows; ++r) basis(r, 0) = indentation * ramp_fraction(t[static_cast<std::size_t>(r)]);
   if (tau.empty()) return basis;
-  if (ramp_time <= 0.0) {  // a step: F_i = delta exp(-t / tau_i), nothing to integrate
-    for (Eigen::Index r = 0; r < rows; ++r) {
-      for (Eigen::Index i = 0; i < modes; ++i) {
-        basis(r, i + 1) = indentation * std::exp(-t[static_cast<std::size_t>(r)] / tau[static_cast<std::size_t>(i)]);
-      }
-    }
-    return basis;
-  }
+  // The ramp in s = t / ramp_time from 0 to 1 (see ModeEquations), with u / indentation = s.
   ModeEquations equations{std::vector<double>(tau.size(), 1.0), std::vector<double>(tau.begin(), tau.end()),
-                          0.0, indentation / ramp_time, indentation, 0.0, true};
+                          0.0, 0.0, indentation, 0.0, 1.0, ramp_time};
   ModeIntegrator integrator(equations);
-  integrator.stop_at(ramp_time);
+  integrator.stop_at(1.0);
   bool holding = false;
   for (Eigen::Index r = 0; r < rows; ++r) {
     const double time = t[static_cast<std::size_t>(r)];
     if (!holding && time > ramp_time) {
-      integrator.advance(ramp_time);
+      integrator.advance(1.0);
       integrator.start_hold(ramp_time);
       holding = true;
     }
-    integrator.advance(time);
+    integrator.advance(holding ? time : ramp_fraction(time));
     for (Eigen::Index i = 0; i < modes; ++i) basis(r, i + 1) = integrator.mode(static_cast<std::size_t>(i));
   }
   return basis;

@@ -253,6 +253,23 @@ TEST_CASE("resuming is refused when an input file changed or vanished, and allow
                        doctest::Contains("the interrupted run was made by growthuq 0.0.0-other"), InputError);
 }
 
+TEST_CASE("the campaign file is compared byte for byte with the stored text, from another directory too") {
+  ScratchDirectory scratch("campaign_file_now");
+  const std::string text = "[campaign]\nname = c\nseed = 11\n";
+  spit(scratch.root / "c.ini", text);
+  CheckpointManifest manifest;
+  manifest.working_directory = scratch.root.string();  // the run started there, with a relative path
+  manifest.campaign_path = "c.ini";
+  manifest.campaign_text = text;
+  CHECK(campaign_file_now(manifest) == CampaignFileNow::unchanged);
+  spit(scratch.root / "c.ini", "[campaign]\nname = c\nseed = 12\n");  // same length
+  CHECK(campaign_file_now(manifest) == CampaignFileNow::changed);
+  spit(scratch.root / "c.ini", text + "\n");
+  CHECK(campaign_file_now(manifest) == CampaignFileNow::changed);
+  fs::remove(scratch.root / "c.ini");
+  CHECK(campaign_file_now(manifest) == CampaignFileNow::unreadable);
+}
+
 TEST_CASE("relative paths of a run are found from another working directory") {
   CheckpointManifest manifest;
   manifest.working_directory = "/somewhere/else";

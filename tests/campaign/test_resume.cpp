@@ -168,13 +168,14 @@ void check_identical(const fs::path& resumed, const fs::path& reference) {
 
 // Resumes the run in `work` with `command`: it must succeed and print, and write, byte for byte
 // what the uninterrupted reference run did.
-void check_resumes_identically(const Study& study, const fs::path& work, const CliOutcome& reference,
-                               const std::vector<std::string>& command,
-                               const std::vector<std::string>& environment = {}) {
+CliOutcome check_resumes_identically(const Study& study, const fs::path& work, const CliOutcome& reference,
+                                     const std::vector<std::string>& command,
+                                     const std::vector<std::string>& environment = {}) {
   const CliOutcome resumed = run_in(work, command, environment);
   REQUIRE_MESSAGE(resumed.exit_code == 0, resumed.err);
   CHECK(resumed.out == reference.out);
   check_identical(work / "out", study.root / "reference" / "out");
+  return resumed;
 }
 
 }  // namespace
@@ -209,7 +210,18 @@ TEST_CASE("SIGTERM stops a run cleanly; --resume finishes it byte-identical to a
   CHECK(both.exit_code == 2);
   CHECK(both.err.find("not both") != std::string::npos);
 
-  check_resumes_identically(study, work, reference, cli({"run", "--resume", "out", "--quiet"}));
+  // The campaign file edited since (another seed): the resume finishes the run as started, from
+  // the stored text (the results are the reference's), and says so in one line; --quiet keeps
+  // the progress off stderr.
+  std::string campaign_text = slurp(study.campaign);
+  const std::size_t seed = campaign_text.find("seed = 11\n");
+  REQUIRE(seed != std::string::npos);
+  spit(study.campaign, campaign_text.replace(seed, 10, "seed = 12\n"));
+  const CliOutcome resumed = check_resumes_identically(study, work, reference, cli({"run", "--resume", "out", "--quiet"}));
+  CHECK(resumed.err == "growthuq run: warning: " + study.campaign.string() +
+                           " changed since the run started; resuming with the campaign text stored in " +
+                           (fs::path("out") / "checkpoint" / "manifest.txt").string() +
+                           " (to run the file as it is now, start the run again with --force)\n");
   CHECK_FALSE(fs::exists(work / "out" / "checkpoint"));
 
   const CliOutcome finished = run_in(work, cli({"run", "--resume", "out"}));
@@ -241,7 +253,18 @@ TEST_CASE("after SIGKILL and a torn record, a changed line file is refused; rest
   CHECK(refused.err.find(line.string() + ": changed since the interrupted run") != std::string::npos);
   spit(line, original);
 
-  check_resumes_identically(study, work, reference, cli({"run", "--resume", "out", "--quiet"}));
+  // The campaign file gone: a warning, and the stored text is used. Without --quiet (the
+  // interrupted run had it): progress, one line per plant line as stderr is not a terminal;
+  // the results the same.
+  fs::rename(study.campaign, study.root / "moved.ini");
+  const CliOutcome resumed = check_resumes_identically(study, work, reference, cli({"run", "--resume", "out"}));
+  const std::vector<std::string> progress = split(resumed.err, '\n');
+  REQUIRE(progress.size() == 3);
+  CHECK(progress[0] == "growthuq run: warning: " + study.campaign.string() +
+                           " cannot be read now; resuming with the campaign text stored in " +
+                           (fs::path("out") / "checkpoint" / "manifest.txt").string() +
+                           " (to run the file as it is now, start the run again with --force)");
+  for (std::size_t i = 1; i < 3; ++i) CHECK(progress[i].find(" 100000 samples in ") != std::string::npos);
   CHECK(entries(work / "out") == std::set<std::string>{"samples.csv", "summary.csv", "results.h5"});
 }
 
@@ -252,9 +275,10 @@ TEST_CASE("a serially interrupted run resumes under mpirun -np 2 to the identica
   interrupt_cleanly(study, work, SIGINT, 130);
 
   const std::vector<std::string> environment = split(GROWTHUQ_MPI_ENVIRONMENT, ' ');
-  check_resumes_identically(study, work, reference,
-                            {GROWTHUQ_MPIEXEC, "-np", "2", "--oversubscribe", GROWTHUQ_CLI, "run", "--resume", "out", "--quiet"},
-                            environment);
+  const CliOutcome resumed = check_resumes_identically(
+      study, work, reference,
+      {GROWTHUQ_MPIEXEC, "-np", "2", "--oversubscribe", GROWTHUQ_CLI, "run", "--resume", "out", "--quiet"}, environment);
+  CHECK(resumed.err.find("warning") == std::string::npos);  // the campaign file is as it was
 }
 
 TEST_CASE("with --no-checkpoint an interrupted run keeps nothing and says so") {

@@ -35,12 +35,12 @@ const MaxwellModel wall{1.95, {0.45, 0.6}, {0.2, 3.0}};
 
 // The truth in E_r space: the exact step response k(t) of `wall`, mapped to E_r(t) / E_r(0)
 // and fitted (noise-free) on the same time grid as the experiments.
-PronyFit exact_step_fit(double dt, double& modulus0) {
+PronyFit exact_step_fit(double dt, double& modulus0, const MaxwellModel& model = wall) {
   std::vector<double> t, y;
   for (int j = 0; dt * j <= 5.0 + 1e-12; ++j) {
     const double time = dt * j;
-    double k = wall.k_inf;
-    for (std::size_t i = 0; i < wall.k.size(); ++i) k += wall.k[i] * std::exp(-time / wall.tau[i]);
+    double k = model.k_inf;
+    for (std::size_t i = 0; i < model.k.size(); ++i) k += model.k[i] * std::exp(-time / model.tau[i]);
     t.push_back(time);
     y.push_back(relaxation_modulus(k, tube));
   }
@@ -105,6 +105,50 @@ TEST_CASE("analysis: the ramp-aware fit recovers the exact step response; the st
                     << step.viscosity / (truth.tau[1] * truth.amplitude[1] * true_modulus0) - 1);
     CHECK(step.einf > truth.einf * (1.0 + 0.3 * simulated.ramp_end));  // biased high, growing with the ramp
     CHECK(step.modulus0 < true_modulus0);
+  }
+}
+
+TEST_CASE("analysis: a ramp shorter than one sample is fitted; its unresolved end costs < 1 %") {
+  // 1.7 ms and 0.17 ms ramps at 100 Hz: no sample inside the ramp, so the ramp-aware fit takes
+  // the middle of [0, t_1] (prony_fit.hpp) and each spring k_i comes out as k_i g(t_r / tau_i)
+  // / g(t_1 / 2 / tau_i), g(x) = (e^x - 1) / x. Its E_r-space fit must be the exact step fit of
+  // those springs to the 0.1 % of the test above. Against the true wall: the fast spring is
+  // off by at most t_1 / (4 tau_fast) = 1.25 %, so k(0) by 1.25 % x 0.45 / 3 = 0.19 %, and
+  // E_r(k) is steeper than k^2 here (x = rho / alpha near 1): E_r(0) within 1 %, and e_inf =
+  // E_inf / E_r(0) with it; the taus within 0.5 %.
+  const double dt = 0.01;
+  double true_modulus0 = 0.0;
+  const PronyFit truth = exact_step_fit(dt, true_modulus0);
+  REQUIRE(truth.ok);
+  auto gain = [](double x) { return std::expm1(x) / x; };
+  for (double rate : {1e-3, 1e-2}) {
+    RampHoldProtocol protocol;
+    protocol.rate = rate;
+    protocol.sample_interval = dt;
+    const SimulatedCurve simulated = simulate_ramp_hold(wall, protocol);
+    REQUIRE(simulated.ramp_end < dt);
+    RelaxationOptions options;
+    options.ramp_aware = true;
+    const CurveFit aware = analyze_relaxation_curve(as_curve(simulated, tube, "simulated"), options);
+    CAPTURE(rate);
+    CAPTURE(aware.reason);
+    REQUIRE(aware.ok);
+    CHECK(aware.ramp_time == doctest::Approx(0.5 * dt).epsilon(1e-12).scale(0.0));
+    MaxwellModel predicted = wall;
+    for (std::size_t i = 0; i < wall.k.size(); ++i) {
+      predicted.k[i] *= gain(simulated.ramp_end / wall.tau[i]) / gain(aware.ramp_time / wall.tau[i]);
+    }
+    double predicted_modulus0 = 0.0;
+    const PronyFit expected = exact_step_fit(dt, predicted_modulus0, predicted);
+    REQUIRE(expected.ok);
+    for (std::size_t i = 0; i < 2; ++i) {
+      CHECK(aware.tau[i] == doctest::Approx(expected.tau[i]).epsilon(1e-3).scale(0.0));
+      CHECK(aware.tau[i] == doctest::Approx(truth.tau[i]).epsilon(5e-3).scale(0.0));
+    }
+    CHECK(aware.einf == doctest::Approx(expected.einf).epsilon(1e-3).scale(0.0));
+    CHECK(aware.einf == doctest::Approx(truth.einf).epsilon(0.01).scale(0.0));
+    CHECK(aware.modulus0 == doctest::Approx(predicted_modulus0).epsilon(1e-3).scale(0.0));
+    CHECK(aware.modulus0 == doctest::Approx(true_modulus0).epsilon(0.01).scale(0.0));
   }
 }
 

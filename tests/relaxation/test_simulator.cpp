@@ -155,3 +155,43 @@ TEST_CASE("simulator: rejects models and protocols it cannot run") {
   protocol.sample_interval = 0.0;
   CHECK_THROWS_AS(simulate_ramp_hold(wall, protocol), InputError);
 }
+
+TEST_CASE("simulator: mode responses for ramps ending on, or ulps from, a sample and for vanishing ramps") {
+  // Fitted ramp ends land anywhere, including within rounding of a sample time, where CVODE
+  // refuses to start the hold ("tout too close to t0"), and next to 0 when the ramp is
+  // shorter than a sample. The closed form (Duhamel's integral of the linear ODE) holds for
+  // every ramp time; with phi(x) = -expm1(-x) / x, the ramp-end force is delta phi(t_r / tau)
+  // and it tends to delta, the step, as t_r -> 0.
+  const std::vector<double> tau{0.05, 0.2, 3.0};
+  std::vector<double> t;
+  for (int j = 0; j <= 300; ++j) t.push_back(0.02 * j);
+  auto phi = [](double x) { return x > 0.0 ? -std::expm1(-x) / x : 1.0; };
+  auto exact = [&](double tau_i, double t_r, double time) {
+    if (time <= t_r) return time > 0.0 ? (time / t_r) * phi(time / tau_i) : 0.0;  // delta = 1
+    return phi(t_r / tau_i) * std::exp(-(time - t_r) / tau_i);
+  };
+  std::vector<double> ramp_times{0.0, 5e-324, 1e-300, 1e-100, 1e-12, 0.003, 7.0};
+  for (std::size_t j : {1, 2, 3, 150, 300}) {
+    double below = t[j], above = t[j];
+    ramp_times.push_back(t[j]);
+    for (int ulps = 1; ulps <= 8; ++ulps) {
+      below = std::nextafter(below, 0.0);
+      above = std::nextafter(above, 10.0);
+      ramp_times.push_back(below);
+      ramp_times.push_back(above);
+    }
+  }
+  for (double t_r : ramp_times) {
+    CAPTURE(t_r);
+    const Eigen::MatrixXd basis = maxwell_mode_responses(tau, t_r, 1.0, t);
+    double worst = 0.0;
+    for (std::size_t j = 0; j < t.size(); ++j) {
+      const double u = t[j] >= t_r ? (t[j] > 0.0 ? 1.0 : 0.0) : t[j] / t_r;
+      CHECK(basis(static_cast<Eigen::Index>(j), 0) == u);
+      for (std::size_t i = 0; i < tau.size(); ++i) {
+        worst = std::max(worst, std::abs(basis(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(i + 1)) - exact(tau[i], t_r, t[j])));
+      }
+    }
+    CHECK(worst < 1e-8);  // as for the ramp above: rtol 1e-10, global error a few tens of it
+  }
+}

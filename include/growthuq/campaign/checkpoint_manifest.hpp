@@ -58,6 +58,12 @@ CheckpointManifest parse_manifest(const std::string& text, const std::string& pa
 // to do.
 void verify_manifest(const CheckpointManifest& manifest, const std::string& manifest_path);
 
+// The campaign file where the interrupted run read it (located as below), compared with the
+// stored campaign_text. A resume uses the stored text in every case, so that it finishes the
+// run as started; the caller tells the user when the file no longer holds that text.
+enum class CampaignFileNow { unchanged, changed, unreadable };
+CampaignFileNow campaign_file_now(const CheckpointManifest& manifest);
+
 // Where the run's `path` is now: unchanged when absolute or when the current directory is the
 // manifest's working directory, otherwise resolved against the working directory.
 std::string locate(const CheckpointManifest& manifest, const std::string& path);

@@ -44,6 +44,12 @@ PronyFit fit_prony(std::span<const double> t, std::span<const double> y,
 // fitted over the ramp (u from 0 at t = 0 to `indentation`) and the hold. The ramp's end is
 // a further unknown in [ramp_time_min, ramp_time_max]: sampled data only bracket it. On return
 // einf is k_inf and amplitude[i] is k_i (N/m) when `force` is in N (rms in its units).
+// Times are from contact: increasing, >= 0 (InputError otherwise). A ramp that ends by the
+// first sample t_1 > 0 (no sample inside it: fast ramps) fits equally well for every end in
+// [ramp_time_min, t_1]; the taus and k_inf do not depend on which, each k_i by a factor of at
+// most (tau_i / t_1)(exp(t_1 / tau_i) - 1) ~ 1 + t_1 / (2 tau_i). Such a fit reports the
+// middle of [ramp_time_min, min(ramp_time_max, t_1)] as ramp_time and the k_i for it; the
+// bounds [0, 0] are the step response fitted to the samples after contact (fit_prony's model).
 PronyFit fit_ramp_hold(std::span<const double> t, std::span<const double> force, double ramp_time_min,
                        double ramp_time_max, double indentation, const PronyFitOptions& options);
 

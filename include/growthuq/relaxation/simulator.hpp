@@ -50,8 +50,10 @@ SimulatedCurve simulate_ramp_hold(const MaxwellModel& model, const RampHoldProto
 
 // The ramp-aware fit's basis: column 0 is u(t) (the k_inf term), column i + 1 the force of
 // mode i with unit stiffness, k_i = 1 N/m, for a displacement ramped linearly from 0 at t = 0
-// to `indentation` at `ramp_time` and held after (ramp_time = 0: a step at t = 0). Integrated
-// with CVODE like simulate_ramp_hold; times must be increasing and >= 0.
+// to `indentation` at `ramp_time` and held after. Integrated with CVODE like
+// simulate_ramp_hold, the ramp in t / ramp_time so that any ramp_time >= 0 is well posed:
+// ramp_time = 0 is the limit of short ramps, a step just after t = 0 (row 0 at t = 0 is
+// contact, all zero). Times must be increasing and >= 0.
 Eigen::MatrixXd maxwell_mode_responses(std::span<const double> tau, double ramp_time,
                                        double indentation, std::span<const double> t);
 
