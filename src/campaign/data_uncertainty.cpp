@@ -273,29 +273,11 @@ DataUncertaintyResult estimate_data_uncertainty(const PreparedCampaign& campaign
 
   // One replicate per chunk (tens of milliseconds each): the pool hands them out as processes
   // become free, and replicate b's key depends on b alone.
-  std::vector<std::vector<double>> numbers(replicates);  // rank 0: each replicate's numbers
   StepProgress shown(pool.is_coordinator() ? progress : ProgressMode::none, log, "data uncertainty", "replicate", replicates);
-  pool.run(
-      replicates, 1,
-      [&](ChunkRange range) {
-        std::vector<double> values;
-        for (std::size_t b = range.begin; b < range.end; ++b) {
-          const std::vector<double> replicate = replicate_numbers(campaign, counter_bits(root, b), samples);
-          values.push_back(static_cast<double>(replicate.size()));
-          values.insert(values.end(), replicate.begin(), replicate.end());
-        }
-        return values;
-      },
-      [&](ChunkRange range, std::span<const double> values) {
-        std::size_t at = 0;
-        for (std::size_t b = range.begin; b < range.end; ++b) {
-          const auto size = static_cast<std::size_t>(values[at]);
-          numbers[b].assign(values.begin() + static_cast<std::ptrdiff_t>(at + 1),
-                            values.begin() + static_cast<std::ptrdiff_t>(at + 1 + size));
-          at += 1 + size;
-        }
-        shown.advance(range.end - range.begin);
-      });
+  // rank 0: each replicate's numbers
+  const std::vector<std::vector<double>> numbers = run_items(
+      pool, replicates, [&](std::size_t b) { return replicate_numbers(campaign, counter_bits(root, b), samples); },
+      [&] { shown.advance(1); });
   shown.finish();
 
   DataUncertaintyResult result;

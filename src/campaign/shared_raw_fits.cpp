@@ -88,30 +88,12 @@ CurveFitter shared_curve_fitter(Pool& pool, std::string line, ProgressMode progr
   return [&pool, &log, line = std::move(line), progress](const std::vector<RelaxationCurve>& curves,
                                                          const RelaxationOptions& options) {
     const std::size_t count = curves.size();
-    std::vector<std::vector<double>> records(count);  // rank 0: each curve's fit as numbers
     StepProgress shown(pool.is_coordinator() ? progress : ProgressMode::none, log,
                        "fitting relaxation curves of line " + line, "curve", count);
-    pool.run(
-        count, 1,
-        [&](ChunkRange range) {
-          std::vector<double> numbers;
-          for (std::size_t c = range.begin; c < range.end; ++c) {
-            const std::vector<double> record = curve_fit_numbers(analyze_relaxation_curve(curves[c], options));
-            numbers.push_back(static_cast<double>(record.size()));
-            numbers.insert(numbers.end(), record.begin(), record.end());
-          }
-          return numbers;
-        },
-        [&](ChunkRange range, std::span<const double> numbers) {
-          std::size_t at = 0;
-          for (std::size_t c = range.begin; c < range.end; ++c) {
-            const auto size = static_cast<std::size_t>(numbers[at]);
-            records[c].assign(numbers.begin() + static_cast<std::ptrdiff_t>(at + 1),
-                              numbers.begin() + static_cast<std::ptrdiff_t>(at + 1 + size));
-            at += 1 + size;
-          }
-          shown.advance(range.end - range.begin);
-        });
+    // rank 0: each curve's fit as numbers
+    const std::vector<std::vector<double>> records = run_items(
+        pool, count, [&](std::size_t c) { return curve_fit_numbers(analyze_relaxation_curve(curves[c], options)); },
+        [&] { shown.advance(1); });
     shown.finish();
 
     // Rank 0 sends every record to every process: first their sizes, then their numbers.

@@ -17,6 +17,19 @@ std::vector<ChunkRange> split_into_chunks(std::size_t count, std::size_t chunk_s
   return chunks;
 }
 
+std::vector<std::vector<double>> run_items(Pool& pool, std::size_t count,
+                                           const std::function<std::vector<double>(std::size_t item)>& item,
+                                           const std::function<void()>& collected) {
+  std::vector<std::vector<double>> records(pool.is_coordinator() ? count : 0);
+  pool.run(
+      count, 1, [&](ChunkRange range) { return item(range.begin); },
+      [&](ChunkRange range, std::span<const double> numbers) {
+        records[range.begin].assign(numbers.begin(), numbers.end());
+        if (collected) collected();
+      });
+  return records;
+}
+
 namespace {
 
 class SerialPool final : public Pool {

@@ -131,6 +131,17 @@ int main() {
     check(gathered.empty(), "gather: nothing on a process other than 0", rank);
   }
 
+  // run_items: item i is i + 1 numbers (uneven), all back on rank 0 in item order.
+  std::size_t collected = 0;
+  const auto item = [](std::size_t i) { return std::vector<double>(i + 1, 0.25 * static_cast<double>(i)); };
+  const std::vector<std::vector<double>> items = run_items(*pool, 37, item, [&] { ++collected; });
+  if (rank == 0) {
+    check(items.size() == 37 && collected == 37, "run_items: every item collected once", rank);
+    for (std::size_t i = 0; i < items.size(); ++i) check(items[i] == item(i), "run_items: item " + std::to_string(i), rank);
+  } else {
+    check(items.empty() && collected == 0, "run_items: nothing on a process other than 0", rank);
+  }
+
   if (failures == 0 && rank == 0) std::printf("pool check passed on %d process(es)\n", pool->size());
   return failures == 0 ? 0 : 1;
 }

@@ -110,6 +110,13 @@ class Pool {
 // The chunks of [0, count), in order; the last may be shorter. chunk_size 0 is treated as 1.
 std::vector<ChunkRange> split_into_chunks(std::size_t count, std::size_t chunk_size);
 
+// Runs item(i) for every i < count over the pool, one item per chunk (items of uneven cost
+// balance), and returns on the coordinator every item's numbers in order of i (an empty vector
+// on the other processes); collected() is called on the coordinator after each item arrives.
+std::vector<std::vector<double>> run_items(Pool& pool, std::size_t count,
+                                           const std::function<std::vector<double>(std::size_t item)>& item,
+                                           const std::function<void()>& collected);
+
 // A pool of one process that runs chunks in order.
 std::unique_ptr<Pool> make_serial_pool();
 
