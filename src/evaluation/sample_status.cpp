@@ -13,6 +13,7 @@ std::string_view to_string(SampleStatus status) {
     case SampleStatus::fit_failed: return "fit_failed";
     case SampleStatus::stiffness_at_sensor_limit: return "stiffness_at_sensor_limit";
     case SampleStatus::out_of_range: return "out_of_range";
+    case SampleStatus::unstable_branch: return "unstable_branch";
   }
   return "unknown";
 }
@@ -28,6 +29,7 @@ std::string_view describe(SampleStatus status) {
     case SampleStatus::fit_failed: return "the relaxation fit failed or is ill-conditioned";
     case SampleStatus::stiffness_at_sensor_limit: return "measured stiffness at or above the sensor stiffness k_sys";
     case SampleStatus::out_of_range: return "a result is beyond double precision range";
+    case SampleStatus::unstable_branch: return "d/d0 > e: on the unstable branch of the hoop relation, the forward model gives a smaller diameter";
   }
   return "unknown status";
 }

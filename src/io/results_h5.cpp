@@ -147,7 +147,7 @@ void check_line_name(const std::string& name, const std::string& file) {
 
 std::vector<std::string> status_names() {
   std::vector<std::string> names;
-  for (int code = 0; code <= static_cast<int>(SampleStatus::out_of_range); ++code) {
+  for (int code = 0; code <= static_cast<int>(last_sample_status); ++code) {
     names.emplace_back(to_string(static_cast<SampleStatus>(code)));
   }
   return names;

@@ -26,6 +26,13 @@ bool positive_finite(double value) noexcept { return std::isfinite(value) && val
 // alpha from the stretch measure q in [0, 1): both relations combined.
 double decay_length(double d, double q) noexcept { return d * std::sqrt(3.0 * q / (16.0 * (1.0 - q))); }
 
+// Relation 1 as p(lambda) = (2 h E / d0) ln(lambda) / lambda peaks at lambda = e: beyond it a
+// larger diameter needs a smaller pressure, an unstable state the forward model (principal
+// branch W0, lambda <= e) never returns. ln(lambda) = 1 (lambda = e, the burst point the forward
+// model reaches with W0(-1/e) = -1) is still ok. Testing ln(lambda) rather than d/d0 keeps the
+// window exactly empty for nu = 0, where q = ln(lambda) and q >= 1 is caught first.
+bool on_unstable_branch(double ln_lambda) noexcept { return ln_lambda > 1.0; }
+
 }  // namespace
 
 void validate(const ThinShellParameters& parameters, std::string_view location) {
@@ -73,6 +80,10 @@ TurgorResult invert_turgor(double k_measured, double d, double d0,
     result.status = SampleStatus::beyond_membrane_limit;
     return result;
   }
+  if (on_unstable_branch(ln_lambda)) {
+    result.status = SampleStatus::unstable_branch;
+    return result;
+  }
   result.alpha = decay_length(d, result.q);
   result.x = parameters.probe_radius / result.alpha;
   result.phi = arnoldi_phi(result.x);
@@ -95,6 +106,10 @@ ModulusResult invert_modulus(double p, double d, double d0, double h) noexcept {
     return result;
   }
   const double ln_lambda = std::log1p((d - d0) / d0);
+  if (on_unstable_branch(ln_lambda)) {
+    result.status = SampleStatus::unstable_branch;
+    return result;
+  }
   result.hoop_stress = p * d / (2.0 * h);
   result.E = result.hoop_stress / ln_lambda;
   result.wall_stiffness = result.E * h;

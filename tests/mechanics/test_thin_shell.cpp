@@ -197,7 +197,10 @@ TEST_CASE("statuses instead of NaN") {
   CHECK(invert_turgor(2, 4 * um, 5 * um, parameters).status == SampleStatus::lambda_not_above_one);
   // q = (1 - nu^2) ln(lambda) >= 1 from lambda = exp(1/0.96) = 2.8334...
   CHECK(invert_turgor(2, 2.84 * 5 * um, 5 * um, parameters).status == SampleStatus::beyond_membrane_limit);
-  CHECK(invert_turgor(2, 2.83 * 5 * um, 5 * um, parameters).status == SampleStatus::ok);
+  // e < lambda < 2.8334: past the pressure maximum of relation 1 (test_thin_shell_branch.cpp).
+  CHECK(invert_turgor(2, 2.83 * 5 * um, 5 * um, parameters).status == SampleStatus::unstable_branch);
+  CHECK(invert_turgor(2, 2.71 * 5 * um, 5 * um, parameters).status == SampleStatus::ok);
+  CHECK(invert_modulus(0.3 * MPa, 2.83 * 5 * um, 5 * um, 100 * nm).status == SampleStatus::unstable_branch);
 
   CHECK(invert_modulus(0.3 * MPa, 6 * um, 5 * um, 0).status == SampleStatus::invalid_input);
   CHECK(invert_modulus(0.3 * MPa, 5 * um, 5 * um, 100 * nm).status == SampleStatus::lambda_not_above_one);

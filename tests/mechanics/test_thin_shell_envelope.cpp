@@ -57,8 +57,9 @@ struct Inverse {
 }  // namespace
 
 TEST_CASE("inverse evaluators over the envelope: a value or the status the model predicts") {
-  // Stretch edges: 1 + 1e-12, the physiological range, q = 1 - 1e-12 (largest membrane stretch),
-  // just beyond it, no stretch and shrinkage; k 0.01-100 N/m plus stiffnesses at and just below
+  // Stretch edges: 1 + 1e-12, the physiological range, just below and above e (the largest
+  // stable stretch), q = 1 - 1e-12 (the largest membrane stretch: unstable_branch unless nu = 0,
+  // where it is below e), just beyond it, no stretch and shrinkage; k 0.01-100 N/m plus stiffnesses at and just below
   // a 1000 N/m sensor; d 1-50 um; rho 0.01-10 um; nu 0-0.45; h 0.02-2 um; an ideal sensor and
   // a real one.
   const double sensor = 1e3;
@@ -75,7 +76,10 @@ TEST_CASE("inverse evaluators over the envelope: a value or the status the model
             {1.02, SampleStatus::ok},
             {1.2, SampleStatus::ok},
             {1.4, SampleStatus::ok},
-            {std::exp((1 - 1e-12) / (1 - nu * nu)), SampleStatus::ok},
+            {std::numbers::e * (1 - 1e-12), SampleStatus::ok},
+            // nu = 0: q = ln(lambda) >= 1 is checked first, so the unstable window is empty.
+            {std::numbers::e * (1 + 1e-12), nu == 0 ? SampleStatus::beyond_membrane_limit : SampleStatus::unstable_branch},
+            {std::exp((1 - 1e-12) / (1 - nu * nu)), nu == 0 ? SampleStatus::ok : SampleStatus::unstable_branch},
             {std::exp(1 / (1 - nu * nu)) * (1 + 1e-12), SampleStatus::beyond_membrane_limit},
             {1.0, SampleStatus::lambda_not_above_one},
             {0.9, SampleStatus::lambda_not_above_one},
@@ -124,12 +128,13 @@ TEST_CASE("inverse evaluators over the envelope: a value or the status the model
         check_outputs(block, turgor_outputs);
         check_outputs(block, modulus_outputs);
         for (SampleStatus status : {SampleStatus::lambda_not_above_one, SampleStatus::beyond_membrane_limit,
-                                    SampleStatus::stiffness_at_sensor_limit}) {
-          check_empty(block, status, {"alpha", "phi", "p"});
+                                    SampleStatus::unstable_branch, SampleStatus::stiffness_at_sensor_limit}) {
+          check_empty(block, status, {"lambda", "alpha", "phi", "p"});
         }
         // invalid_input comes from either evaluator (a bad k or a bad h); the modulus is empty.
         for (SampleStatus status : {SampleStatus::lambda_not_above_one, SampleStatus::beyond_membrane_limit,
-                                    SampleStatus::stiffness_at_sensor_limit, SampleStatus::invalid_input}) {
+                                    SampleStatus::unstable_branch, SampleStatus::stiffness_at_sensor_limit,
+                                    SampleStatus::invalid_input}) {
           check_empty(block, status, modulus_outputs);
         }
         for (std::size_t i = 0; i < grid.size(); ++i) {

@@ -17,7 +17,12 @@ enum class SampleStatus : std::uint8_t {
   fit_failed = 6,             // a relaxation fit did not converge or was ill-conditioned
   stiffness_at_sensor_limit = 7,  // measured k >= sensor stiffness: the series correction diverges
   out_of_range = 8,           // a result overflows or underflows double precision
+  unstable_branch = 9,        // e < lambda, q < 1: past the hoop relation's pressure maximum; the
+                              // forward model gives the other (smaller) diameter for that p, E, h
 };
+
+// The largest code: names and counts run over 0 .. last_sample_status (HDF5 "names" attribute).
+inline constexpr SampleStatus last_sample_status = SampleStatus::unstable_branch;
 
 // Short name used in CSV/HDF5 ("ok", "lambda_not_above_one", ...).
 std::string_view to_string(SampleStatus status);

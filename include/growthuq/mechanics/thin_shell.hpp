@@ -40,7 +40,10 @@ struct TurgorResult {
 // Measured stiffness k_m [N/m], turgid and plasmolysed diameters [m]. Statuses:
 // invalid_input (a non-finite or non-positive input), stiffness_at_sensor_limit
 // (k_m >= k_sys), lambda_not_above_one (d <= d0), beyond_membrane_limit (q >= 1),
-// out_of_range (p not a finite positive double). ln(lambda) is computed as
+// unstable_branch (ln(lambda) > 1, i.e. e < lambda < exp(1/(1 - nu^2)): past the pressure
+// maximum of relation 1, where the forward model returns the other, smaller diameter; lambda = e
+// itself is ok), out_of_range (p not a finite positive double), checked in this order, so for
+// nu = 0 (q = ln(lambda)) every lambda > e is beyond_membrane_limit. ln(lambda) is computed as
 // log1p((d - d0)/d0), exact to rounding even at lambda = 1 + 1e-12.
 TurgorResult invert_turgor(double k_measured, double d, double d0,
                            const ThinShellParameters& parameters) noexcept;
@@ -50,7 +53,8 @@ struct ModulusResult {
   double E;               // [Pa]
   double hoop_stress;     // p d / (2 h) [Pa]
   double wall_stiffness;  // E h [N/m]
-  SampleStatus status;    // invalid_input, lambda_not_above_one, out_of_range (E overflows)
+  SampleStatus status;    // invalid_input, lambda_not_above_one, unstable_branch (ln(lambda) > 1,
+                          // as invert_turgor), out_of_range (E overflows)
 };
 
 ModulusResult invert_modulus(double p, double d, double d0, double h) noexcept;
