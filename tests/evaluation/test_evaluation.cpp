@@ -1,7 +1,12 @@
-// The planner picks exactly the evaluators an output needs, in a runnable order.
+// The planner picks exactly the evaluators an output needs, in a runnable order; the statuses
+// it carries have one name each.
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <string>
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/evaluation/evaluator.hpp"
@@ -79,4 +84,31 @@ TEST_CASE("running a plan fills columns and keeps the first status") {
   CHECK(block.status()[1] == SampleStatus::invalid_input);
   CHECK(std::isnan(block.column("d")[1]));
   CHECK(to_string(block.status()[1]) == "invalid_input");
+}
+
+TEST_CASE("every status code has its own name and sentence and a row in README's statuses table") {
+  // The codes run 0 .. last_sample_status without a gap (results.h5 writes names[code]); the
+  // code after the last has no name, so a status appended without moving last_sample_status
+  // shows up here.
+  std::ifstream file(std::string(GROWTHUQ_SOURCE_DIR) + "/README.md");
+  REQUIRE(file);
+  const std::string readme((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  std::set<std::string> names;
+  std::set<std::string> sentences;
+  const int last = static_cast<int>(last_sample_status);
+  CHECK(last == 9);
+  for (int code = 0; code <= last; ++code) {
+    const auto status = static_cast<SampleStatus>(code);
+    const std::string name(to_string(status));
+    CAPTURE(code);
+    CHECK(name != "unknown");
+    CHECK(describe(status) != "unknown status");
+    CHECK(readme.find("| `" + name + "` |") != std::string::npos);
+    names.insert(name);
+    sentences.emplace(describe(status));
+  }
+  CHECK(names.size() == static_cast<std::size_t>(last + 1));
+  CHECK(sentences.size() == static_cast<std::size_t>(last + 1));
+  CHECK(to_string(static_cast<SampleStatus>(last + 1)) == "unknown");
+  CHECK(to_string(SampleStatus::unstable_branch) == "unstable_branch");
 }

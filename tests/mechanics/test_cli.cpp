@@ -81,26 +81,30 @@ TEST_CASE("eval: bad flags are one-line errors with exit code 2") {
 TEST_CASE("eval: a file of tubes gets outputs, empty cells and a status per row") {
   const Scratch scratch("eval_file");
   scratch.file("tubes.csv",
-               "# two wild-type-like tubes, one unstretched, one bad stiffness, one bad thickness\n"
+               "# two wild-type-like tubes, one unstretched, one bad stiffness, one bad thickness, one\n"
+               "# stretched past lambda = e (2.79, on the unstable branch)\n"
                "tube,k_N_per_m,h_nm,d_um,d0_um\n"
                "A,2.87,145,6.56,5.35\n"
                "\"B,2\",1.95,199,5.32,4.51\n"
                "C,2.0,150,5.0,5.35\n"
                "D,-1,150,6,5\n"
-               "E,2,0,6,5\n");
+               "E,2,0,6,5\n"
+               "F,2.87,145,14.5,5.2\n");
   const CliOutcome run = scratch.run("eval --in tubes.csv --out results.csv --rho-um 0.5");
   REQUIRE(run.exit_code == 0);
   CHECK(run.out.find("lambda_not_above_one        1") != std::string::npos);
+  CHECK(run.out.find("unstable_branch             1") != std::string::npos);
   const CsvTable results = read_csv(scratch.file("results.csv").string());
   const std::vector<std::string> header{"tube", "k_N_per_m", "h_nm", "d_um", "d0_um", "p_MPa", "E_MPa", "alpha_um",
                                         "phi", "lambda", "hoop_stress_MPa", "wall_stiffness_N_per_m", "status"};
   CHECK(results.header == header);
-  REQUIRE(results.rows.size() == 5);
+  REQUIRE(results.rows.size() == 6);
   CHECK(results.rows[1][0] == "B,2");  // text columns pass through, quoted as needed
   CHECK(relative_error(parse_double(results.rows[0][5], "", ""), 0.25280778711172389726) < 1e-13);
   CHECK(relative_error(parse_double(results.rows[0][6], "", ""), 28.047344773892977043) < 1e-13);
-  const std::vector<std::string> statuses{"ok", "ok", "lambda_not_above_one", "invalid_input", "invalid_input"};
-  for (std::size_t row = 0; row < 5; ++row) {
+  const std::vector<std::string> statuses{"ok",           "ok",           "lambda_not_above_one",
+                                          "invalid_input", "invalid_input", "unstable_branch"};
+  for (std::size_t row = 0; row < 6; ++row) {
     CHECK(results.rows[row][12] == statuses[row]);
     for (std::size_t column = 5; column < 12; ++column) {
       CHECK(results.rows[row][column].empty() == (statuses[row] != "ok"));
