@@ -43,9 +43,9 @@ import numpy as np
 from scipy import special, stats
 
 STATUS_NAMES = ['ok', 'invalid_input', 'lambda_not_above_one', 'beyond_membrane_limit', 'burst',
-                'no_growth', 'fit_failed', 'stiffness_at_sensor_limit', 'out_of_range']
+                'no_growth', 'fit_failed', 'stiffness_at_sensor_limit', 'out_of_range', 'unstable_branch']
 OK, INVALID, LAMBDA_NOT_ABOVE_ONE, BEYOND_MEMBRANE, BURST, NO_GROWTH = 0, 1, 2, 3, 4, 5
-SENSOR_LIMIT, OUT_OF_RANGE = 7, 8
+SENSOR_LIMIT, OUT_OF_RANGE, UNSTABLE_BRANCH = 7, 8, 9
 
 # symbol: (column suffix, factor to SI)
 UNITS = {'1': ('', 1.0), 'frac': ('frac', 1.0), '%': ('pct', 1e-2), 'm': ('m', 1.0), 'mm': ('mm', 1e-3),
@@ -348,8 +348,10 @@ def evaluate(line, campaign, si):
                 k = k_m / (1 - k_m / campaign.k_sys)
                 lam = d / d0
                 flag(~(d > d0), LAMBDA_NOT_ABOVE_ONE)
-                q = (1 - campaign.nu ** 2) * np.log1p((d - d0) / d0)
+                ln_lambda = np.log1p((d - d0) / d0)
+                q = (1 - campaign.nu ** 2) * ln_lambda
                 flag(~(q < 1), BEYOND_MEMBRANE)
+                flag(ln_lambda > 1, UNSTABLE_BRANCH)  # past the hoop relation's pressure maximum
                 alpha = d * np.sqrt(3 * q / (16 * (1 - q)))
                 phi = arnoldi_phi(campaign.rho / alpha)
                 p = 4 * k / (3 * math.pi * d * phi)
@@ -362,8 +364,10 @@ def evaluate(line, campaign, si):
                 p, d, d0, h = si['p'], si['d'], si['d0'], si['h']
                 flag(~(positive_finite(p) & positive_finite(d) & positive_finite(d0) & positive_finite(h)), INVALID)
                 flag(~(d > d0), LAMBDA_NOT_ABOVE_ONE)
+                ln_lambda = np.log1p((d - d0) / d0)
+                flag(ln_lambda > 1, UNSTABLE_BRANCH)
                 hoop = p * d / (2 * h)
-                E = hoop / np.log1p((d - d0) / d0)
+                E = hoop / ln_lambda
                 flag(~(positive_finite(hoop) & positive_finite(E) & positive_finite(E * h)), OUT_OF_RANGE)
                 good = status == OK
                 for key, value in (('E', E), ('hoop_stress', hoop), ('wall_stiffness', E * h)):
