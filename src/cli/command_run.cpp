@@ -17,6 +17,7 @@
 #include "growthuq/campaign/checkpoint.hpp"
 #include "growthuq/campaign/checkpoint_manifest.hpp"
 #include "growthuq/campaign/progress.hpp"
+#include "growthuq/campaign/run_footprint.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/interrupt.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -134,6 +135,23 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
       });
     }
   }
+
+  // A run this machine cannot hold is refused now rather than killed part way (run_footprint.hpp).
+  const bool resuming = values.count("resume") != 0;
+  on_coordinator(pool, [&] {
+    const RunShape shape = run_shape(*prepared, !resuming && settings.checkpointing == Checkpointing::start);
+    MachineRoom room;
+    room.memory_bytes = available_memory_bytes();
+    room.disk_bytes = available_disk_bytes(prepared->campaign().output_dir);
+    room.processes = pool.processes_on_this_machine();
+    if (resuming) {
+      require_room(shape, room, checkpoint_manifest_path(options.resume), "samples");
+    } else if (values.count("samples")) {
+      require_room(shape, room, location, "--samples");
+    } else {
+      require_room(shape, room, options.campaign, "[campaign] samples");
+    }
+  });
 
   // From here a first Ctrl-C or SIGTERM stops the pool at the next chunk (the coordinator's
   // signal decides for every process); a second one ends the process.

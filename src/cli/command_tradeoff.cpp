@@ -13,6 +13,7 @@
 #include "growthuq/campaign/campaign_file.hpp"
 #include "growthuq/campaign/campaign_run.hpp"
 #include "growthuq/campaign/progress.hpp"
+#include "growthuq/campaign/run_footprint.hpp"
 #include "growthuq/campaign/tradeoff.hpp"
 #include "growthuq/campaign/tradeoff_run.hpp"
 #include "growthuq/core/error.hpp"
@@ -104,6 +105,16 @@ int run_tradeoff_command(const TradeoffOptions& options, const po::variables_map
     Campaign first = campaign;
     first.samples = counts.front();
     const PreparedCampaign validated(std::move(first), pool, ProgressMode::none, std::cerr);
+    // The largest count must fit in memory (run_footprint.hpp); the trade-off writes no samples.
+    on_coordinator(pool, [&] {
+      RunShape shape = run_shape(validated, false);
+      shape.samples = counts.back();
+      shape.csv = shape.hdf5 = false;
+      MachineRoom room;
+      room.memory_bytes = available_memory_bytes();
+      room.processes = pool.processes_on_this_machine();
+      require_room(shape, room, location, "--samples-list");
+    });
   }
 
   const std::string csv_path =

@@ -3,6 +3,7 @@
 #include <array>
 #include <exception>
 #include <iostream>
+#include <new>
 #include <string>
 
 #include "commands.hpp"
@@ -58,6 +59,11 @@ int main(int argc, char** argv) {
       const bool at_command_line = error.location() == "growthuq " + name;
       std::cerr << "growthuq " << name << ": error: " << (at_command_line ? error.problem() : error.what()) << "\n";
       return 2;
+    } catch (const std::bad_alloc&) {
+      // What the up-front estimate (campaign/run_footprint.hpp) did not foresee: say so plainly.
+      std::cerr << "growthuq " << name << ": error: out of memory: this machine could not provide the memory the "
+                   "command needed (fewer samples need less)\n";
+      return 3;
     } catch (const std::exception& error) {
       std::cerr << "growthuq " << name << ": internal error: " << error.what() << "\n";
       return 3;

@@ -88,6 +88,11 @@ class MpiPool final : public Pool {
     }
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    // The processes that can share memory with this one: those on its machine.
+    MPI_Comm local;
+    MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &local);
+    MPI_Comm_size(local, &local_size_);
+    MPI_Comm_free(&local);
   }
 
   ~MpiPool() override {
@@ -103,6 +108,7 @@ class MpiPool final : public Pool {
 
   int rank() const override { return rank_; }
   int size() const override { return size_; }
+  int processes_on_this_machine() const override { return local_size_; }
 
   void run(std::size_t count, std::size_t chunk_size, const ChunkWork& work, const ChunkSink& sink,
            const std::function<bool(ChunkRange)>& skip) override {
@@ -328,6 +334,7 @@ class MpiPool final : public Pool {
 
   int rank_ = 0;
   int size_ = 1;
+  int local_size_ = 1;
   std::deque<Sent> sent_;  // a deque never moves its elements: the buffers stay put
 };
 

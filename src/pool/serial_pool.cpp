@@ -36,6 +36,7 @@ class SerialPool final : public Pool {
  public:
   int rank() const override { return 0; }
   int size() const override { return 1; }
+  int processes_on_this_machine() const override { return 1; }
 
   void run(std::size_t count, std::size_t chunk_size, const ChunkWork& work, const ChunkSink& sink,
            const std::function<bool(ChunkRange)>& skip) override {

@@ -60,6 +60,8 @@ class Pool {
   virtual int rank() const = 0;
   virtual int size() const = 0;
   bool is_coordinator() const { return rank() == 0; }
+  // How many of the processes share this process's machine (and its memory).
+  virtual int processes_on_this_machine() const = 0;
 
   // Runs `work` over [0, count) in chunks of `chunk_size`, handed out dynamically so that
   // slow chunks balance; `skip(range)` (optional) tells chunks already done (resume). Every
