@@ -14,15 +14,15 @@
 #include <string>
 #include <vector>
 
-#include <time.h>
-
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/growth/growth_rate.hpp"
 #include "growthuq/growth/viscosity.hpp"
 #include "growthuq/mechanics/thin_shell_evaluators.hpp"
+#include "bench_timing.hpp"
 
 using namespace growthuq;
+using bench::thread_cpu_seconds;
 
 namespace {
 
@@ -84,14 +84,6 @@ SampleBlock physiological_tubes(std::mt19937_64& engine, std::size_t size) {
     columns[5][i] = e;
   }
   return block;
-}
-
-// CPU time of the calling thread, s: unlike wall time it does not count the time the thread
-// waits for a core, so the figure is per core even on a loaded machine.
-double thread_cpu_seconds() {
-  timespec now{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
 }
 
 // Peak resident memory of this process (Linux /proc), in MiB; 0 when unavailable.

@@ -7,7 +7,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -21,8 +20,11 @@
 #include "growthuq/sampling/line_design.hpp"
 #include "growthuq/sampling/random_stream.hpp"
 #include "growthuq/stats/rank_correlation.hpp"
+#include "bench_timing.hpp"
 
 using namespace growthuq;
+using bench::median;
+using bench::thread_cpu_seconds;
 
 namespace {
 
@@ -53,19 +55,6 @@ Options parse(int argc, char** argv) {
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// CPU time of this thread: on a shared machine it measures the work, not the waiting.
-double thread_cpu_seconds() {
-  timespec now{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 }  // namespace

@@ -15,7 +15,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
-#include <ctime>
 #include <iostream>
 #include <numeric>
 #include <span>
@@ -29,21 +28,13 @@
 #include "sampling/latin_column.hpp"
 #include "sampling/mt19937_64_block.hpp"
 #include "stats/keyed_sort.hpp"
+#include "bench_timing.hpp"
 
 using namespace growthuq;
+using bench::median;
+using bench::thread_cpu_seconds;
 
 namespace {
-
-double thread_cpu_seconds() {
-  timespec now{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
 
 struct Options {
   std::uint64_t samples = 1'000'000;

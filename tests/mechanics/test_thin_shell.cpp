@@ -15,8 +15,11 @@
 #include "growthuq/mechanics/arnoldi.hpp"
 #include "growthuq/mechanics/thin_shell.hpp"
 #include "growthuq/mechanics/thin_shell_evaluators.hpp"
+#include "support/random_draws.hpp"
 
 using namespace growthuq;
+using growthuq::testing::log_uniform;
+using growthuq::testing::unit_uniform;
 
 namespace {
 
@@ -37,11 +40,6 @@ ThinShellParameters probe(double rho, double nu = 0.2,
   return parameters;
 }
 
-// Uniform double in [0, 1) from the top 53 bits: reproducible on every standard library.
-double unit_uniform(std::mt19937_64& engine) { return static_cast<double>(engine() >> 11) * 0x1p-53; }
-double log_uniform(std::mt19937_64& engine, double low, double high) {
-  return low * std::exp(unit_uniform(engine) * std::log(high / low));
-}
 
 }  // namespace
 

@@ -18,8 +18,11 @@
 #include "growthuq/mechanics/arnoldi.hpp"
 #include "growthuq/mechanics/thin_shell.hpp"
 #include "growthuq/mechanics/thin_shell_evaluators.hpp"
+#include "support/random_draws.hpp"
 
 using namespace growthuq;
+using growthuq::testing::log_uniform;
+using growthuq::testing::unit_uniform;
 
 namespace {
 
@@ -38,10 +41,6 @@ ThinShellParameters probe(double rho, double nu) {
   return parameters;
 }
 
-double unit_uniform(std::mt19937_64& engine) { return static_cast<double>(engine() >> 11) * 0x1p-53; }
-double log_uniform(std::mt19937_64& engine, double low, double high) {
-  return low * std::exp(unit_uniform(engine) * std::log(high / low));
-}
 
 // What the closed-form inverse returned for a window sample before it had a status: p from
 // relation 2 with alpha = d sqrt(3q / (16 (1 - q))) (q < 1 still holds), E from relation 1.
