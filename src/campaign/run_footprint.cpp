@@ -64,14 +64,31 @@ RunFootprint estimate_run_footprint(const RunShape& shape) {
   const std::uint64_t o = shape.largest_outputs;
   const std::uint64_t line = line_bytes_per_sample(shape);
   RunFootprint footprint;
+  footprint.samples = shape.samples;
+  footprint.what = std::to_string(shape.lines) + (shape.lines == 1 ? " line" : " lines") + " of up to " +
+                   std::to_string(m) + " inputs and " + std::to_string(o) + " outputs";
+  footprint.fixed_memory_bytes = program_bytes + block_pool_bytes;
   footprint.memory_bytes_per_sample = 20 * m + 4 * o + 36 + (shape.lines > 1 ? line * 3 / 5 : 0) + (shape.csv ? line : 0);
-  footprint.memory_bytes = program_bytes + block_pool_bytes + footprint.memory_bytes_per_sample * shape.samples;
+  footprint.memory_bytes = footprint.fixed_memory_bytes + footprint.memory_bytes_per_sample * shape.samples;
   std::uint64_t disk = 0;
   if (shape.hdf5) disk += 8 * (m + o) + 9;
   if (shape.csv) disk += 20 * (m + o) + 30 + shape.longest_line_name;
   if (shape.checkpoint) disk += 8 * (o + 1);
   footprint.disk_bytes_per_sample = disk * shape.lines;
   footprint.disk_bytes = footprint.disk_bytes_per_sample * shape.samples;
+  return footprint;
+}
+
+RunFootprint estimate_design_footprint(std::size_t samples, std::size_t variables) {
+  const std::uint64_t m = variables;
+  RunFootprint footprint;
+  footprint.samples = samples;
+  footprint.what = "a design of " + std::to_string(m) + " variables and its CSV text";
+  footprint.fixed_memory_bytes = program_bytes + block_pool_bytes;
+  footprint.memory_bytes_per_sample = 32 * m + 36 + 19 * m + 2;
+  footprint.memory_bytes = footprint.fixed_memory_bytes + footprint.memory_bytes_per_sample * samples;
+  footprint.disk_bytes_per_sample = 19 * m + 2;
+  footprint.disk_bytes = footprint.disk_bytes_per_sample * samples;
   return footprint;
 }
 
@@ -97,15 +114,11 @@ std::optional<std::uint64_t> available_disk_bytes(const std::string& directory) 
   return static_cast<std::uint64_t>(space.f_bavail) * space.f_frsize;
 }
 
-void require_room(const RunShape& shape, const MachineRoom& room, std::string_view location, std::string_view samples_key) {
-  const RunFootprint footprint = estimate_run_footprint(shape);
-  const std::string value = std::to_string(shape.samples);
-  const std::string what = std::to_string(shape.lines) + (shape.lines == 1 ? " line" : " lines") + " of up to " +
-                           std::to_string(shape.largest_inputs) + " inputs and " +
-                           std::to_string(shape.largest_outputs) + " outputs";
+void require_room(const RunFootprint& footprint, const MachineRoom& room, std::string_view location,
+                  std::string_view samples_key) {
   const auto refuse = [&](const std::string& need, std::uint64_t fitting) {
     throw InputError(std::string(location),
-                     std::string(samples_key) + " = '" + value + "': " + need + "; " +
+                     std::string(samples_key) + " = '" + std::to_string(footprint.samples) + "': " + need + "; " +
                          (fitting == 0 ? std::string("not even one sample per line fits")
                                        : "at most " + std::to_string(fitting) + " samples per line fit"));
   };
@@ -115,16 +128,15 @@ void require_room(const RunShape& shape, const MachineRoom& room, std::string_vi
     const std::uint64_t budget = *room.memory_bytes / 10 * 9 / static_cast<std::uint64_t>(processes);
     if (footprint.memory_bytes > budget) {
       const std::string each = processes == 1 ? "" : " for each of the " + std::to_string(processes) + " processes on this machine";
-      refuse("the run needs about " + gigabytes(footprint.memory_bytes) + " of memory" + each + " (" + what + ", about " +
-                 std::to_string(footprint.memory_bytes_per_sample) + " bytes per sample and line) and this machine has " +
-                 gigabytes(*room.memory_bytes) + " available",
-             largest_fitting(budget, program_bytes + block_pool_bytes, footprint.memory_bytes_per_sample));
+      refuse("the run needs about " + gigabytes(footprint.memory_bytes) + " of memory" + each + " (" + footprint.what +
+                 ", about " + std::to_string(footprint.memory_bytes_per_sample) +
+                 " bytes per sample and line) and this machine has " + gigabytes(*room.memory_bytes) + " available",
+             largest_fitting(budget, footprint.fixed_memory_bytes, footprint.memory_bytes_per_sample));
     }
   }
   if (room.disk_bytes && footprint.disk_bytes > *room.disk_bytes / 10 * 9) {
-    refuse("the run writes about " + gigabytes(footprint.disk_bytes) + " into its output directory (" + what +
-               "; results.h5, samples.csv and the checkpoint as configured) and its file system has " +
-               gigabytes(*room.disk_bytes) + " free",
+    refuse("the run writes about " + gigabytes(footprint.disk_bytes) + " (" + footprint.what +
+               ") and the file system it writes to has " + gigabytes(*room.disk_bytes) + " free",
            largest_fitting(*room.disk_bytes / 10 * 9, 0, footprint.disk_bytes_per_sample));
   }
 }

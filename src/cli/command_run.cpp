@@ -145,11 +145,11 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
     room.disk_bytes = available_disk_bytes(prepared->campaign().output_dir);
     room.processes = pool.processes_on_this_machine();
     if (resuming) {
-      require_room(shape, room, checkpoint_manifest_path(options.resume), "samples");
+      require_room(estimate_run_footprint(shape), room, checkpoint_manifest_path(options.resume), "samples");
     } else if (values.count("samples")) {
-      require_room(shape, room, location, "--samples");
+      require_room(estimate_run_footprint(shape), room, location, "--samples");
     } else {
-      require_room(shape, room, options.campaign, "[campaign] samples");
+      require_room(estimate_run_footprint(shape), room, options.campaign, "[campaign] samples");
     }
   });
 

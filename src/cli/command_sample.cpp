@@ -5,12 +5,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <optional>
 #include <string>
 
 #include "commands.hpp"
+#include "growthuq/campaign/run_footprint.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
@@ -24,6 +26,8 @@
 #include "options.hpp"
 
 namespace growthuq::cli {
+
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -140,6 +144,11 @@ int run_sample(const Arguments& arguments) {
   check_can_write(options.out, overwrite);
 
   const LineDistributions line = read_line_file(options.line_file);
+  // A design this machine cannot hold is refused now rather than killed part way (run_footprint.hpp).
+  MachineRoom room;
+  room.memory_bytes = available_memory_bytes();
+  room.disk_bytes = available_disk_bytes(fs::path(options.out).parent_path().string());
+  require_room(estimate_design_footprint(sampling.samples, line.variables.size()), room, "growthuq sample", "--samples");
   std::optional<RankCorrelationFile> correlation;
   if (!options.rank_correlation_file.empty()) correlation = read_rank_correlation_csv(options.rank_correlation_file);
 

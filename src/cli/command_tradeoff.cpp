@@ -113,7 +113,7 @@ int run_tradeoff_command(const TradeoffOptions& options, const po::variables_map
       MachineRoom room;
       room.memory_bytes = available_memory_bytes();
       room.processes = pool.processes_on_this_machine();
-      require_room(shape, room, location, "--samples-list");
+      require_room(estimate_run_footprint(shape), room, location, "--samples-list");
     });
   }
 

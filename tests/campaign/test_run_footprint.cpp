@@ -122,6 +122,16 @@ TEST_CASE("the memory estimate is never below a real run's peak, and within 1.3x
     CHECK(static_cast<double>(estimate.memory_bytes) <= 1.3 * static_cast<double>(run.peak_bytes) + double(1u << 29));
     fs::remove_all(scratch.root / (std::string("out_") + c.campaign));
   }
+  // growthuq sample keeps the design and its CSV text in memory: 7 variables of the wild type.
+  const MeasuredRun sample = run_measured({"sample", "--line", source_dir + "/distributions/wild_type.ini", "--samples",
+                                           "2000000", "--seed", "1", "--out", "design.csv"},
+                                          scratch.root);
+  REQUIRE_MESSAGE(sample.exit_code == 0, sample.err);
+  const RunFootprint design = estimate_design_footprint(2'000'000, 7);
+  CAPTURE(sample.peak_bytes);
+  CAPTURE(design.memory_bytes);
+  CHECK(design.memory_bytes >= sample.peak_bytes);
+  CHECK(static_cast<double>(design.memory_bytes) <= 1.3 * static_cast<double>(sample.peak_bytes) + double(1u << 29));
 }
 
 TEST_CASE("the largest count offered (two significant digits) fits and the next one does not, memory and disk") {
@@ -138,7 +148,7 @@ TEST_CASE("the largest count offered (two significant digits) fits and the next 
   memory_only.processes = 2;
   std::string message;
   try {
-    require_room(shape, memory_only, "growthuq run", "--samples");
+    require_room(estimate_run_footprint(shape), memory_only, "growthuq run", "--samples");
     FAIL("1e9 samples per line cannot fit in 24 GB");
   } catch (const InputError& error) {
     message = error.what();
@@ -147,14 +157,14 @@ TEST_CASE("the largest count offered (two significant digits) fits and the next 
   CHECK(message.find("for each of the 2 processes on this machine") != std::string::npos);
   const std::uint64_t fitting = largest_offered(message);
   shape.samples = fitting;
-  CHECK_NOTHROW(require_room(shape, memory_only, "growthuq run", "--samples"));
+  CHECK_NOTHROW(require_room(estimate_run_footprint(shape), memory_only, "growthuq run", "--samples"));
   shape.samples = next_two_digit(fitting);
-  CHECK_THROWS_AS(require_room(shape, memory_only, "growthuq run", "--samples"), InputError);
+  CHECK_THROWS_AS(require_room(estimate_run_footprint(shape), memory_only, "growthuq run", "--samples"), InputError);
   // Twice the processes on the machine, about half the samples each.
   memory_only.processes = 4;
   shape.samples = 1'000'000'000;
   try {
-    require_room(shape, memory_only, "growthuq run", "--samples");
+    require_room(estimate_run_footprint(shape), memory_only, "growthuq run", "--samples");
   } catch (const InputError& error) {
     CHECK(static_cast<double>(largest_offered(error.what())) < 0.55 * static_cast<double>(fitting));
   }
@@ -163,16 +173,17 @@ TEST_CASE("the largest count offered (two significant digits) fits and the next 
   disk_only.disk_bytes = 50'000'000'000ULL;
   shape.samples = 100'000'000;
   try {
-    require_room(shape, disk_only, "study.ini", "[campaign] samples");
+    require_room(estimate_run_footprint(shape), disk_only, "study.ini", "[campaign] samples");
     FAIL("5 lines x 1e8 samples of csv, hdf5 and checkpoint cannot fit in 50 GB");
   } catch (const InputError& error) {
     message = error.what();
   }
   CHECK(message.rfind("study.ini: [campaign] samples = '100000000': the run writes about ", 0) == 0);
+  CHECK(message.find("the file system it writes to has 50.0 GB free") != std::string::npos);
   shape.samples = largest_offered(message);
-  CHECK_NOTHROW(require_room(shape, disk_only, "study.ini", "[campaign] samples"));
+  CHECK_NOTHROW(require_room(estimate_run_footprint(shape), disk_only, "study.ini", "[campaign] samples"));
   shape.samples = next_two_digit(shape.samples);
-  CHECK_THROWS_AS(require_room(shape, disk_only, "study.ini", "[campaign] samples"), InputError);
+  CHECK_THROWS_AS(require_room(estimate_run_footprint(shape), disk_only, "study.ini", "[campaign] samples"), InputError);
 }
 
 TEST_CASE("the machine's figures: memory below the total, disk of a folder not made yet is its parent's") {
@@ -204,6 +215,12 @@ TEST_CASE("a run or trade-off too large for this machine is refused in one line,
   CHECK(tradeoff.exit_code == 2);
   CHECK(tradeoff.err.rfind("growthuq tradeoff: error: --samples-list = '4000000000': the run needs about ", 0) == 0);
   CHECK_FALSE(fs::exists(scratch.root / "t.csv"));
+
+  const CliOutcome sample = run_cli("sample --line " + source_dir + "/distributions/wild_type.ini --samples 4000000000 --seed 1 --out d.csv",
+                                    scratch.root);
+  CHECK(sample.exit_code == 2);
+  CHECK(sample.err.rfind("growthuq sample: error: --samples = '4000000000': the run needs about ", 0) == 0);
+  CHECK_FALSE(fs::exists(scratch.root / "d.csv"));
 
   // Under mpirun every process on the machine holds a whole line: the estimate counts them.
   const std::string mpi = "cd '" + scratch.root.string() + "' && env " + GROWTHUQ_MPI_ENVIRONMENT + " '" + GROWTHUQ_MPIEXEC +

@@ -31,10 +31,13 @@ struct RunShape {
 RunShape run_shape(const PreparedCampaign& campaign, bool checkpoint);
 
 struct RunFootprint {
+  std::uint64_t samples = 0;                  // per line
+  std::string what;                           // "5 lines of up to 7 inputs and 4 outputs", for messages
+  std::uint64_t fixed_memory_bytes = 0;       // what does not grow with the samples
+  std::uint64_t memory_bytes_per_sample = 0;  // the growth per sample per line
   std::uint64_t memory_bytes = 0;             // peak resident memory of the coordinating process
-  std::uint64_t memory_bytes_per_sample = 0;  // its growth per sample per line
-  std::uint64_t disk_bytes = 0;               // result files and checkpoint at their largest
   std::uint64_t disk_bytes_per_sample = 0;
+  std::uint64_t disk_bytes = 0;               // result files and checkpoint at their largest
 };
 
 // The coordinator holds up to three lines at a time (one designed, one finished, one written,
@@ -48,6 +51,11 @@ struct RunFootprint {
 // Disk: results.h5 8 (m + o) + 9 bytes, samples.csv 20 (m + o) + 30 + name bytes, checkpoint
 // 8 (o + 1) bytes per sample and line.
 RunFootprint estimate_run_footprint(const RunShape& shape);
+
+// `growthuq sample`: the design of `variables` columns, its working set (20 m + 36 bytes per
+// sample, as a campaign line's) and its CSV text (about 19 bytes per value) are in memory at
+// once: 32 m + 36 + 19 m + 2 bytes per sample, plus 40 MB and the block pool; disk the text.
+RunFootprint estimate_design_footprint(std::size_t samples, std::size_t variables);
 
 // MemAvailable of /proc/meminfo (what can be allocated without swapping), if readable.
 std::optional<std::uint64_t> available_memory_bytes();
@@ -66,8 +74,10 @@ struct MachineRoom {
 
 // InputError "<location>: <samples_key> = '<samples>': the run needs about ..." (location and
 // key as the user gave the count: "growthuq run" and "--samples", or the campaign file and
-// "samples") when the estimate, with a tenth kept back for everything else on the machine,
-// does not fit: the message gives both figures and the largest sample count per line that fits.
-void require_room(const RunShape& shape, const MachineRoom& room, std::string_view location, std::string_view samples_key);
+// "[campaign] samples") when the estimate, with a tenth kept back for everything else on the
+// machine, does not fit: the message gives both figures and the largest sample count per line
+// that fits (rounded down to two significant digits).
+void require_room(const RunFootprint& footprint, const MachineRoom& room, std::string_view location,
+                  std::string_view samples_key);
 
 }  // namespace growthuq
