@@ -266,7 +266,8 @@ int run_eval(const Arguments& arguments) {
                        "--rho-um R (--k K --d-um D --d0-um D0 [--h-nm H] | --in tubes.csv --out results.csv) [options]",
                        "Inverts the thin-shell model for measured tubes: turgor p and decay length alpha from\n"
                        "(k, d, d0), modulus E, hoop stress and wall stiffness E h when h is known.\n"
-                       "Valid for 1 < d/d0 < exp(1/(1 - nu^2)); other tubes get a status, not a number.",
+                       "Valid for 1 < d/d0 <= e (beyond e the wall is past its pressure maximum); other tubes get a\n"
+                       "status, not a number.",
                        described, {}, values)) {
     return 0;
   }
