@@ -4,7 +4,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <cstring>
 #include <limits>
+#include <map>
 #include <memory>
 #include <stdexcept>
 
@@ -56,10 +58,12 @@ std::optional<RankCorrelationFile> restricted(const std::string& path, const std
 
 // Which process does each of `costs.size()` pieces of work: the next piece (in the order given)
 // goes to the process with the least work so far, the coordinator starting with
-// `coordinator_load` for what it alone does; ties go to the highest rank.
-std::vector<int> share_out(const std::vector<double>& costs, int processes, double coordinator_load) {
+// `coordinator_load` for what it alone does; ties go to the highest rank. Process `left_out`
+// (if > 0) gets none.
+std::vector<int> share_out(const std::vector<double>& costs, int processes, double coordinator_load, int left_out = -1) {
   std::vector<double> load(static_cast<std::size_t>(processes), 0.0);
   load[0] = coordinator_load;
+  if (left_out > 0) load[static_cast<std::size_t>(left_out)] = std::numeric_limits<double>::infinity();
   std::vector<int> owner;
   for (const double cost : costs) {
     int best = processes - 1;
@@ -168,37 +172,79 @@ LineDesign PreparedCampaign::design(const PreparedLine& line) const {
   return sample_line(line.design_variables, options, line.correlation ? &*line.correlation : nullptr);
 }
 
-LineDesign PreparedCampaign::design(const PreparedLine& line, Pool& pool, const std::function<void()>& meanwhile) const {
-  SamplingOptions options;
-  options.samples = campaign_.samples;
-  options.seed = campaign_.seed;
-  options.position = campaign_.stratum_position;
-  // With Iman-Conover, column 0 costs about a third of another (no sort); independent columns
-  // cost the same. The coordinator has `meanwhile` to do too (about a column and a half's work
-  // for finishing a line, measured). Whoever computes a column also shuffles its scores, and
-  // sends them to the others.
-  const std::size_t columns = line.design_variables.variables.size();
-  std::vector<double> costs(columns, 1.0);
-  if (line.correlation && columns > 1) costs[0] = 0.35;
-  const std::vector<int> owner = share_out(costs, pool.size(), 1.5);
-  LineDesigner::SharedPreparation shared;
-  for (std::size_t j = 0; j < columns; ++j) shared.shuffles_here.push_back(owner[j] == pool.rank() ? 1 : 0);
-  shared.share = [&](std::size_t j, std::span<double> scores) { pool.broadcast_bytes(std::as_writable_bytes(scores), owner[j]); };
-  const std::unique_ptr<LineDesigner> designer =
-      line_designer(line.design_variables, options, line.correlation ? &*line.correlation : nullptr, &shared);
-  if (meanwhile) meanwhile();
-  LineDesign design = designer->outline();
-  for (std::size_t j = 0; j < columns; ++j) {
-    if (owner[j] != pool.rank()) continue;
-    design.strictly_increasing[j] = designer->compute_column(j, design.ranks[j], design.values[j]) ? 1 : 0;
-  }
-  for (std::size_t j = 0; j < columns; ++j) {
-    pool.broadcast_vector(design.ranks[j], campaign_.samples, owner[j]);
-    pool.broadcast_vector(design.values[j], campaign_.samples, owner[j]);
-    pool.broadcast_bytes(std::as_writable_bytes(std::span(&design.strictly_increasing[j], 1)), owner[j]);
-  }
-  return design;
+namespace {
+
+// Bytes of a trivially copyable value, appended to and read from a message.
+template <class T>
+void append_bytes(std::string& message, const T& value) {
+  message.append(reinterpret_cast<const char*>(&value), sizeof value);
 }
+template <class T>
+T read_bytes(const std::string& message, std::size_t& at) {
+  T value;
+  std::memcpy(&value, message.data() + at, sizeof value);
+  at += sizeof value;
+  return value;
+}
+
+// Sends the design process `owner` made of `line` to every other process: its columns, and for
+// the coordinator's report its target and warnings (the rest of the outline is not used past
+// the design; names are the line's variables).
+void share_design(LineDesign& design, const PreparedLine& line, std::size_t samples, int owner, Pool& pool) {
+  const std::size_t columns = line.design_variables.variables.size();
+  const bool mine = pool.rank() == owner;
+  if (!mine) {
+    design.names.clear();
+    for (const LineVariable& variable : line.design_variables.variables) design.names.push_back(variable.name);
+    design.ranks.resize(columns);
+    design.values.resize(columns);
+    design.strictly_increasing.assign(columns, 0);
+  }
+  for (std::size_t j = 0; j < columns; ++j) {
+    pool.broadcast_vector(design.ranks[j], samples, owner);
+    pool.broadcast_vector(design.values[j], samples, owner);
+  }
+  pool.broadcast_bytes(std::as_writable_bytes(std::span(design.strictly_increasing)), owner);
+
+  // The message: m, the m x m target Spearman matrix (m = 0: none), then each warning's length
+  // and text.
+  std::string message;
+  if (mine) {
+    const Eigen::Index m = design.target ? design.target->target_spearman.rows() : 0;
+    append_bytes(message, static_cast<std::uint64_t>(m));
+    for (Eigen::Index a = 0; a < m; ++a) {
+      for (Eigen::Index b = 0; b < m; ++b) append_bytes(message, design.target->target_spearman(a, b));
+    }
+    for (const std::string& warning : design.warnings) {
+      append_bytes(message, static_cast<std::uint64_t>(warning.size()));
+      message += warning;
+    }
+  }
+  std::uint64_t size = message.size();
+  pool.broadcast_bytes(std::as_writable_bytes(std::span(&size, 1)), owner);
+  message.resize(size);
+  pool.broadcast_bytes(std::as_writable_bytes(std::span(message.data(), message.size())), owner);
+  if (mine) return;
+  std::size_t at = 0;
+  const auto m = static_cast<Eigen::Index>(read_bytes<std::uint64_t>(message, at));
+  if (m > 0) {
+    ImanConoverTarget target;
+    target.names = design.names;
+    target.target_spearman.resize(m, m);
+    for (Eigen::Index a = 0; a < m; ++a) {
+      for (Eigen::Index b = 0; b < m; ++b) target.target_spearman(a, b) = read_bytes<double>(message, at);
+    }
+    design.target = std::move(target);
+  }
+  design.warnings.clear();
+  while (at < message.size()) {
+    const auto length = static_cast<std::size_t>(read_bytes<std::uint64_t>(message, at));
+    design.warnings.push_back(message.substr(at, length));
+    at += length;
+  }
+}
+
+}  // namespace
 
 std::vector<double> PreparedCampaign::evaluate_chunk(const PreparedLine& line, const LineDesign& design,
                                                      ChunkRange range) const {
@@ -429,9 +475,9 @@ RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunO
   const std::size_t n = campaign.campaign().samples;
   const std::size_t outputs = campaign.computed_outputs().size();
   // The coordinator finishes each line (gathers its statistics, assembles it, hands it to the
-  // observer) during the next line's design, after the part every process must do before the
-  // columns; the other processes need nothing from that. A failure of the observer (writing)
-  // reaches them after the next design.
+  // observer) when the next one starts, while that line's designer may still be designing it;
+  // the other processes need nothing from that. A failure of the observer (writing) reaches them
+  // when the next design is shared.
   CoordinatorFailure observer_failure;
   std::function<void()> finish_line;
   const auto finish_previous_line = [&] {
@@ -441,15 +487,40 @@ RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunO
     finish_line = nullptr;
     outcome.timings.observer += seconds_since(start);
   };
-  for (std::size_t index = 0; index < campaign.lines().size(); ++index) {
+  // Designs are made whole by one process each, one line ahead: rank 0 makes line 0's while
+  // line 1's designer makes line 1's, then line i + 1's designer (process 1 + i % (K - 1), never
+  // rank 0) makes it while the others compute line i's statistics, which it takes no part in.
+  // A design is the same whoever makes it, so the results do not depend on K.
+  const std::size_t line_count = campaign.lines().size();
+  const int processes = pool.size();
+  const auto designer_of = [&](std::size_t line_index) {
+    return processes == 1 || line_index == 0 ? 0 : 1 + static_cast<int>((line_index - 1) % static_cast<std::size_t>(processes - 1));
+  };
+  std::map<std::size_t, LineDesign> held;  // designs this process made of lines not yet shared
+  const auto design_ahead = [&](std::size_t line_index) {
+    const auto start = Clock::now();
+    held.emplace(line_index, campaign.design(campaign.lines()[line_index]));
+    outcome.timings.design += seconds_since(start);
+  };
+  for (std::size_t index = 0; index < line_count; ++index) {
     const PreparedLine& line = campaign.lines()[index];
-    auto start = Clock::now();
     // The observer sees each line finished before the next one starts.
-    const auto meanwhile = [&] {
-      finish_previous_line();
-      observer_failure.run(pool, [&] { observer.line_started(line, n); });
-    };
-    auto design = std::make_shared<LineDesign>(campaign.design(line, pool, meanwhile));
+    finish_previous_line();
+    observer_failure.run(pool, [&] { observer.line_started(line, n); });
+    auto start = Clock::now();
+    if (index == 0 || processes == 1) {
+      if (pool.is_coordinator()) held.emplace(index, campaign.design(line));
+      if (index == 0 && processes > 1 && line_count > 1 && pool.rank() == designer_of(1)) {
+        held.emplace(1, campaign.design(campaign.lines()[1]));
+      }
+    }
+    auto design = std::make_shared<LineDesign>();
+    const int designer = designer_of(index);
+    if (pool.rank() == designer) {
+      *design = std::move(held.at(index));
+      held.erase(index);
+    }
+    if (processes > 1) share_design(*design, line, n, designer, pool);
     observer_failure.share(pool);
     outcome.timings.design += seconds_since(start);
 
@@ -524,7 +595,10 @@ RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunO
     // coordinator shares its core with its writer thread (about half a column's work).
     std::vector<double> costs(columns, 1.0);
     for (std::size_t c = 0; c < design->ranks.size(); ++c) costs[c] = design->strictly_increasing[c] != 0 ? 0.25 : 1.0;
-    const std::vector<int> owner = share_out(costs, pool.size(), 0.5);
+    // The next line's designer, when it has still to make it, takes none: it designs meanwhile.
+    const std::size_t next = index + 1;
+    const int next_designer = processes > 1 && next >= 2 && next < line_count ? designer_of(next) : -1;
+    const std::vector<int> owner = share_out(costs, pool.size(), 0.5, next_designer);
     auto statistics = std::make_shared<std::vector<ColumnStatistics>>(columns);
     std::vector<double> mine;  // [column, size, message] for each column this process computes
     for (std::size_t c = 0; c < columns; ++c) {
@@ -575,6 +649,7 @@ RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunO
       pool.gather(std::move(mine));
     }
     outcome.timings.statistics += seconds_since(start);
+    if (pool.rank() == next_designer) design_ahead(next);
   }
   finish_previous_line();
   observer_failure.share(pool);

@@ -135,8 +135,7 @@ struct LineDesigner::Preparation {
 };
 
 LineDesigner::LineDesigner(std::string_view line_name, std::vector<DesignVariable> variables,
-                           const SamplingOptions& options, const ImanConoverTarget* target,
-                           const SharedPreparation* shared)
+                           const SamplingOptions& options, const ImanConoverTarget* target)
     : preparation_(std::make_unique<Preparation>()) {
   Preparation& prepared = *preparation_;
   const std::size_t n = options.samples;
@@ -173,9 +172,6 @@ LineDesigner::LineDesigner(std::string_view line_name, std::vector<DesignVariabl
   if (factor.info() != Eigen::Success) {
     throw std::invalid_argument("latin_hypercube_design: target correlation is not positive definite");
   }
-  if (shared != nullptr && shared->shuffles_here.size() != m) {
-    throw std::invalid_argument("LineDesigner: the shared preparation must say for every variable who shuffles it");
-  }
   prepared.table = detail::van_der_waerden_table(n);
   prepared.shuffled.resize(n * (m - 1));
   std::vector<const double*> columns{prepared.table->score.data()};
@@ -183,15 +179,8 @@ LineDesigner::LineDesigner(std::string_view line_name, std::vector<DesignVariabl
   for (std::size_t j = 0; j < m; ++j) {
     prepared.after_shuffle.emplace_back(stream_key(options.seed, line_name, prepared.variables[j].name));
     if (j == 0) continue;
-    if (shared == nullptr || shared->shuffles_here[j] != 0) {
-      detail::shuffled_copy(prepared.table->score, column(j), prepared.after_shuffle[j]);
-    }
+    detail::shuffled_copy(prepared.table->score, column(j), prepared.after_shuffle[j]);
     columns.push_back(column(j).data());
-  }
-  // Every process shuffles its columns first, then they are shared, so that no process waits
-  // for another's shuffle before doing its own.
-  if (shared != nullptr) {
-    for (std::size_t j = 1; j < m; ++j) shared->share(j, column(j));
   }
   prepared.sample_of_row.resize(n);
   detail::shuffle_strata(prepared.sample_of_row, prepared.after_shuffle[0]);
@@ -229,8 +218,7 @@ bool LineDesigner::compute_column(std::size_t j, LargeVector<std::uint32_t>& ran
     detail::shuffle_strata(std::span<std::uint32_t>(sample_of_stratum.data(), n), random);
     return write_column(variable, random, options, sample_of_stratum.data(), scatter, ranks, values);
   }
-  // The stratum points come next in the stream (a process that did not shuffle this column has
-  // not moved its generator past the shuffle: SharedPreparation).
+  // The stratum points come next in the stream, after the shuffle.
   detail::Mt19937_64Block random = prepared.after_shuffle[j];
   if (j == 0) return write_column(variable, random, options, prepared.sample_of_row.data(), scatter, ranks, values);
   detail::LargeBuffer<std::uint64_t> records(n), sort_scratch(n);
@@ -264,16 +252,18 @@ LineDesign latin_hypercube_design(std::string_view line_name, const std::vector<
   return design;
 }
 
+namespace {
+
+// The designer of a line file's design (sample_line).
 std::unique_ptr<LineDesigner> line_designer(const LineDistributions& line, const SamplingOptions& options,
-                                            const RankCorrelationFile* correlation,
-                                            const LineDesigner::SharedPreparation* shared) {
+                                            const RankCorrelationFile* correlation) {
   std::vector<DesignVariable> variables;
   std::vector<std::string> names;
   for (const LineVariable& variable : line.variables) {
     variables.push_back({variable.name, variable.distribution});
     names.push_back(variable.name);
   }
-  if (correlation == nullptr) return std::make_unique<LineDesigner>(line.name, std::move(variables), options, nullptr, shared);
+  if (correlation == nullptr) return std::make_unique<LineDesigner>(line.name, std::move(variables), options, nullptr);
 
   // The line's full matrix: the file's entries where it names both variables, 0 elsewhere.
   const auto m = static_cast<Eigen::Index>(names.size());
@@ -297,8 +287,10 @@ std::unique_ptr<LineDesigner> line_designer(const LineDistributions& line, const
     }
   }
   const ImanConoverTarget target = make_iman_conover_target(spearman, names, correlation->path);
-  return std::make_unique<LineDesigner>(line.name, std::move(variables), options, &target, shared);
+  return std::make_unique<LineDesigner>(line.name, std::move(variables), options, &target);
 }
+
+}  // namespace
 
 LineDesign sample_line(const LineDistributions& line, const SamplingOptions& options,
                        const RankCorrelationFile* correlation) {

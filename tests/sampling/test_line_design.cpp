@@ -3,8 +3,6 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <future>
-#include <memory>
 #include <span>
 #include <thread>
 #include <vector>
@@ -141,47 +139,29 @@ TEST_CASE("a correlated design is Iman-Conover on its columns' permutations, row
   }
 }
 
-TEST_CASE("processes sharing a design's preparation get the design of one process") {
-  // Two designers on two threads stand for two processes: each shuffles the score columns of the
-  // variables it computes and hands them to the other through SharedPreparation::share; every
-  // column, computed by the one that shuffled it, equals the column of a designer alone.
+TEST_CASE("columns computed on two threads, in any order, are the design computed in order") {
+  // compute_column depends only on the designer's preparation: a column is the same whichever
+  // thread computes it and whatever was computed before (the campaign designs lines on several
+  // processes and some columns alone).
   Eigen::MatrixXd s(4, 4);
   s << 1, 0.25, 0.55, 0.3, 0.25, 1, -0.1, 0.05, 0.55, -0.1, 1, 0.7, 0.3, 0.05, 0.7, 1;
   const ImanConoverTarget target = make_iman_conover_target(s, {"k", "h", "d", "d0"}, "test");
   SamplingOptions options;
   options.samples = 20011;
   options.seed = 5;
-  const LineDesigner alone("wild_type", wild_type_variables(), options, &target);
-  REQUIRE(alone.outline().correlation.imposed);
-
-  const std::vector<int> owner{0, 1, 0, 1};  // who computes (and shuffles) each column
-  std::vector<std::promise<std::vector<double>>> published(4);
-  std::vector<std::shared_future<std::vector<double>>> received;
-  for (auto& promise : published) received.push_back(promise.get_future().share());
-  const auto designer_of = [&](int process) {
-    LineDesigner::SharedPreparation shared;
-    for (const int o : owner) shared.shuffles_here.push_back(o == process ? 1 : 0);
-    shared.share = [&, process](std::size_t j, std::span<double> scores) {
-      if (owner[j] == process) {
-        published[j].set_value(std::vector<double>(scores.begin(), scores.end()));
-      } else {
-        const std::vector<double>& theirs = received[j].get();
-        std::copy(theirs.begin(), theirs.end(), scores.begin());
-      }
-    };
-    return std::make_unique<LineDesigner>("wild_type", wild_type_variables(), options, &target, &shared);
-  };
-  std::unique_ptr<LineDesigner> other;
-  std::thread second([&] { other = designer_of(1); });
-  const std::unique_ptr<LineDesigner> first = designer_of(0);
+  const LineDesign in_order = latin_hypercube_design("wild_type", wild_type_variables(), options, &target);
+  REQUIRE(in_order.correlation.imposed);
+  const LineDesigner designer("wild_type", wild_type_variables(), options, &target);
+  std::vector<LargeVector<std::uint32_t>> ranks(4);
+  std::vector<LargeVector<double>> values(4);
+  std::thread second([&] {
+    for (const std::size_t j : {3, 1}) designer.compute_column(j, ranks[j], values[j]);
+  });
+  for (const std::size_t j : {2, 0}) designer.compute_column(j, ranks[j], values[j]);
   second.join();
   for (std::size_t j = 0; j < 4; ++j) {
     CAPTURE(j);
-    LargeVector<std::uint32_t> expected_ranks, ranks;
-    LargeVector<double> expected_values, values;
-    alone.compute_column(j, expected_ranks, expected_values);
-    (owner[j] == 0 ? *first : *other).compute_column(j, ranks, values);
-    CHECK(ranks == expected_ranks);
-    CHECK(values == expected_values);
+    CHECK(ranks[j] == in_order.ranks[j]);
+    CHECK(values[j] == in_order.values[j]);
   }
 }

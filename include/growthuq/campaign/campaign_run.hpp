@@ -82,11 +82,6 @@ class PreparedCampaign {
   // The line's design (identical on every process for the same campaign and seed).
   LineDesign design(const PreparedLine& line) const;
 
-  // The same design computed by all processes of `pool` together (each computes some columns
-  // and receives the others); every process calls it and gets the whole design. `meanwhile`
-  // (optional) runs once the part every process must do first is done, before this process's
-  // columns: other work of the process's own, which the others need not wait for.
-  LineDesign design(const PreparedLine& line, Pool& pool, const std::function<void()>& meanwhile = nullptr) const;
 
   // The chunk's computed outputs (SI), output after output, then each sample's status as a
   // double: (computed_outputs().size() + 1) * (range.end - range.begin) values.

@@ -5,9 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <memory>
-#include <span>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -55,25 +53,13 @@ struct LineDesign {
 LineDesign latin_hypercube_design(std::string_view line_name, const std::vector<DesignVariable>& variables,
                                   const SamplingOptions& options, const ImanConoverTarget* target);
 
-// The same design, a column at a time, so that processes can share the work: the constructor
-// does what every column needs (for a correlated design the shuffled score columns and
-// Iman-Conover's mix, about a fifth of the work) and is the same on every process; then
-// compute_column(j) gives column j from that alone, on any process, in any order.
+// The same design, a column at a time: the constructor does what every column needs (for a
+// correlated design the shuffled score columns and Iman-Conover's mix, about a fifth of the
+// work); compute_column(j) then gives column j from that alone, in any order, on any thread.
 class LineDesigner {
  public:
-  // Processes may share the preparation too: the shuffled score columns of a correlated design
-  // are its largest part. shuffles_here[j] (one per variable; entry 0 is not used) says whether
-  // this process shuffles variable j's scores; once it has shuffled them all, share(j, scores)
-  // is called for every j >= 1 in order, on every process, and must leave in `scores` that
-  // column as the process that shuffled it has it (a broadcast from it). A process can then compute only the columns it
-  // shuffled itself (the rest of their streams are its own), and column 0.
-  struct SharedPreparation {
-    std::vector<std::uint8_t> shuffles_here;
-    std::function<void(std::size_t j, std::span<double> scores)> share;
-  };
-
   LineDesigner(std::string_view line_name, std::vector<DesignVariable> variables, const SamplingOptions& options,
-               const ImanConoverTarget* target, const SharedPreparation* shared = nullptr);
+               const ImanConoverTarget* target);
   LineDesigner(const LineDesigner&) = delete;
   LineDesigner& operator=(const LineDesigner&) = delete;
   ~LineDesigner();
@@ -98,10 +84,5 @@ class LineDesigner {
 // are uncorrelated with everything); a name the line lacks is an InputError naming the file.
 LineDesign sample_line(const LineDistributions& line, const SamplingOptions& options,
                        const RankCorrelationFile* correlation);
-
-// The designer of that design (LineDesigner above), to compute it column by column.
-std::unique_ptr<LineDesigner> line_designer(const LineDistributions& line, const SamplingOptions& options,
-                                            const RankCorrelationFile* correlation,
-                                            const LineDesigner::SharedPreparation* shared = nullptr);
 
 }  // namespace growthuq
