@@ -1,10 +1,7 @@
 #include "growthuq/campaign/csv_results.hpp"
 
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
+#include <utility>
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -18,18 +15,10 @@ std::string number_cell(double value) { return std::isfinite(value) ? format_dou
 }  // namespace
 
 SamplesCsvWriter::SamplesCsvWriter(std::string path, std::vector<std::string> columns)
-    : path_(std::move(path)), partial_(path_ + ".partial"), columns_(std::move(columns)) {
-  out_.open(partial_, std::ios::binary | std::ios::trunc);
-  if (!out_) throw InputError(partial_, std::string("cannot create: ") + std::strerror(errno));
+    : file_(std::move(path)), columns_(std::move(columns)) {
   std::string header = "line,sample";
   for (const std::string& column : columns_) header += "," + csv_cell(column);
-  out_ << header << ",status\n";
-}
-
-SamplesCsvWriter::~SamplesCsvWriter() {
-  if (finished_) return;
-  out_.close();
-  std::remove(partial_.c_str());
+  file_.write(header + ",status\n");
 }
 
 void SamplesCsvWriter::write_line(const LineResult& result) {
@@ -53,20 +42,11 @@ void SamplesCsvWriter::write_line(const LineResult& result) {
     row += ',';
     row += to_string(result.status[i]);
     row += '\n';
-    out_ << row;
+    file_.write(row);
   }
-  if (!out_) throw InputError(partial_, std::string("write failed: ") + std::strerror(errno));
 }
 
-void SamplesCsvWriter::finish() {
-  out_.flush();
-  out_.close();
-  if (!out_) throw InputError(partial_, std::string("write failed: ") + std::strerror(errno));
-  std::error_code error;
-  std::filesystem::rename(partial_, path_, error);
-  if (error) throw InputError(path_, "cannot move the finished file into place: " + error.message());
-  finished_ = true;
-}
+void SamplesCsvWriter::finish() { file_.commit(); }
 
 std::vector<std::string> summary_csv_header() {
   return {"line", "quantity", "unit", "n", "n_flagged", "median", "q1", "q3", "iqr", "p10", "p90", "mean", "sd",

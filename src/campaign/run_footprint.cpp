@@ -83,9 +83,9 @@ RunFootprint estimate_design_footprint(std::size_t samples, std::size_t variable
   const std::uint64_t m = variables;
   RunFootprint footprint;
   footprint.samples = samples;
-  footprint.what = "a design of " + std::to_string(m) + " variables and its CSV text";
+  footprint.what = "a design of " + std::to_string(m) + " variables";
   footprint.fixed_memory_bytes = program_bytes + block_pool_bytes;
-  footprint.memory_bytes_per_sample = 32 * m + 36 + 19 * m + 2;
+  footprint.memory_bytes_per_sample = 16 * m + 16;
   footprint.memory_bytes = footprint.fixed_memory_bytes + footprint.memory_bytes_per_sample * samples;
   footprint.disk_bytes_per_sample = 19 * m + 2;
   footprint.disk_bytes = footprint.disk_bytes_per_sample * samples;

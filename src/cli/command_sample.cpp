@@ -51,17 +51,36 @@ std::string padded(const std::string& text, std::size_t width) {
   return text.size() >= width ? text + " " : text + std::string(width - text.size(), ' ');
 }
 
-std::string design_csv(const LineDistributions& line, const LineDesign& design) {
-  std::vector<std::string> header;
-  for (const LineVariable& variable : line.variables) header.push_back(column_name(variable.name, *variable.unit));
-  CsvWriter writer(header);
-  const std::size_t n = design.values.empty() ? 0 : design.values[0].size();
-  std::vector<std::string> cells(header.size());
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = 0; j < cells.size(); ++j) cells[j] = format_double(design.values[j][i]);
-    writer.add_row(cells);
+// The design as CSV, streamed a row at a time through a partial file (output_file.hpp), so the
+// text is never in memory whole.
+void write_design_csv(const std::string& path, const LineDistributions& line, const LineDesign& design) {
+  PartialFile file(path);
+  std::string row;
+  for (const LineVariable& variable : line.variables) {
+    row += (row.empty() ? "" : ",") + csv_cell(column_name(variable.name, *variable.unit));
   }
-  return writer.text();
+  file.write(row + "\n");
+  const std::size_t n = design.values.empty() ? 0 : design.values[0].size();
+  for (std::size_t i = 0; i < n; ++i) {
+    row.clear();
+    for (std::size_t j = 0; j < design.values.size(); ++j) {
+      if (j > 0) row += ',';
+      row += format_double(design.values[j][i]);
+    }
+    row += '\n';
+    file.write(row);
+  }
+  file.commit();
+}
+
+// Column j's summary. When its values strictly increase with the strata, stratum k holds the
+// k-th smallest value, so the sorted column is a scatter by stratum, no sort.
+SampleSummary column_summary(const LineDesign& design, std::size_t j) {
+  if (design.strictly_increasing[j] == 0) return summarize(design.values[j]);
+  const std::size_t n = design.values[j].size();
+  std::vector<double> sorted(n);
+  for (std::size_t i = 0; i < n; ++i) sorted[design.ranks[j][i]] = design.values[j][i];
+  return summarize_sorted(sorted);
 }
 
 std::string correlation_number(double value) {
@@ -77,7 +96,7 @@ void print_summary(const LineDistributions& line, const LineDesign& design) {
             << padded("(law)", 11) << padded("IQR", 11) << "(law)\n";
   for (std::size_t j = 0; j < line.variables.size(); ++j) {
     const LineVariable& variable = line.variables[j];
-    const SampleSummary sample = summarize(design.values[j]);
+    const SampleSummary sample = column_summary(design, j);
     const double law_q1 = quantile(variable.distribution, 0.25);
     const double law_q3 = quantile(variable.distribution, 0.75);
     std::cout << padded(variable.name, 10) << padded(std::string(variable.unit->symbol), 8)
@@ -154,7 +173,7 @@ int run_sample(const Arguments& arguments) {
 
   const LineDesign design = sample_line(line, sampling, correlation ? &*correlation : nullptr);
   for (const std::string& warning : design.warnings) std::cerr << "growthuq sample: " << warning << "\n";
-  write_file_atomically(options.out, design_csv(line, design), overwrite);
+  write_design_csv(options.out, line, design);
 
   std::cout << "line '" << line.name << "' (" << line.path << "): " << sampling.samples << " samples, seed "
             << sampling.seed << ", " << (options.centred ? "centred" : "random") << " points in the strata"

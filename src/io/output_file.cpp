@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <utility>
 
 #include "growthuq/core/error.hpp"
 #include "read_text_file.hpp"
@@ -30,26 +31,37 @@ void check_can_write(const std::string& path, Overwrite overwrite) {
   }
 }
 
-void write_file_atomically(const std::string& path, std::string_view content,
-                           Overwrite overwrite) {
-  check_can_write(path, overwrite);
-  const std::string partial = path + ".partial";
-  {
-    std::ofstream out(partial, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(partial, std::string("cannot create: ") + std::strerror(errno));
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.flush();
-    if (!out) {
-      std::remove(partial.c_str());
-      throw InputError(partial, std::string("write failed: ") + std::strerror(errno));
-    }
-  }
+PartialFile::PartialFile(std::string path) : path_(std::move(path)), partial_(path_ + ".partial") {
+  out_.open(partial_, std::ios::binary | std::ios::trunc);
+  if (!out_) throw InputError(partial_, std::string("cannot create: ") + std::strerror(errno));
+}
+
+PartialFile::~PartialFile() {
+  if (committed_) return;
+  out_.close();
+  std::remove(partial_.c_str());
+}
+
+void PartialFile::write(std::string_view text) {
+  out_.write(text.data(), static_cast<std::streamsize>(text.size()));
+  if (!out_) throw InputError(partial_, std::string("write failed: ") + std::strerror(errno));
+}
+
+void PartialFile::commit() {
+  out_.flush();
+  out_.close();
+  if (!out_) throw InputError(partial_, std::string("write failed: ") + std::strerror(errno));
   std::error_code error;
-  std::filesystem::rename(partial, path, error);
-  if (error) {
-    std::remove(partial.c_str());
-    throw InputError(path, "cannot move the finished file into place: " + error.message());
-  }
+  std::filesystem::rename(partial_, path_, error);
+  if (error) throw InputError(path_, "cannot move the finished file into place: " + error.message());
+  committed_ = true;
+}
+
+void write_file_atomically(const std::string& path, std::string_view content, Overwrite overwrite) {
+  check_can_write(path, overwrite);
+  PartialFile file(path);
+  file.write(content);
+  file.commit();
 }
 
 }  // namespace growthuq

@@ -26,6 +26,11 @@ SampleSummary summarize(std::span<const double> values) {
     }
   }
   std::sort(sorted.begin(), sorted.end());
+  return summarize_sorted(sorted);
+}
+
+SampleSummary summarize_sorted(std::span<const double> sorted) {
+  if (sorted.empty()) throw InputError("sample summary", "no values to summarize");
   SampleSummary summary;
   summary.count = sorted.size();
   summary.p10 = sorted_quantile(sorted, 0.10);

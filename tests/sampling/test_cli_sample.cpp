@@ -2,11 +2,13 @@
 // overwrite, and one-line errors for bad options and files.
 #include <doctest/doctest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "growthuq/io/csv.hpp"
 #include "growthuq/stats/sample_summary.hpp"
@@ -88,6 +90,19 @@ TEST_CASE("growthuq sample writes the design and prints medians and rank correla
   const growthuq::SampleSummary k = growthuq::summarize(table.numeric_column("k_N_per_m"));
   CHECK(k.median == doctest::Approx(2.87).epsilon(0.005));
   CHECK(k.iqr() == doctest::Approx(0.83).epsilon(0.01));
+  // The printed median and IQR (taken from the strata, without sorting) are the written
+  // column's, summarized by sorting: "k  N/m  <law>  median  (law)  IQR  (law)", 4 digits.
+  char median_text[32], iqr_text[32];
+  std::snprintf(median_text, sizeof median_text, "%.4g", k.median);
+  std::snprintf(iqr_text, sizeof iqr_text, "%.4g", k.iqr());
+  const std::size_t k_row = run.out.find("\nk ");
+  REQUIRE(k_row != std::string::npos);
+  std::istringstream fields(run.out.substr(k_row + 1, run.out.find('\n', k_row + 1) - k_row - 1));
+  std::vector<std::string> words;
+  for (std::string word; fields >> word;) words.push_back(word);
+  REQUIRE(words.size() >= 4);
+  CHECK(words[words.size() - 4] == median_text);
+  CHECK(words[words.size() - 2] == iqr_text);
   CHECK(run.out.find("rank correlation (Spearman)") != std::string::npos);
   CHECK(run.out.find("k, d") != std::string::npos);
   CHECK(run.err.empty());

@@ -35,3 +35,18 @@ TEST_CASE("summary rejects empty and non-finite samples") {
   const std::vector<double> bad{1.0, INFINITY};
   CHECK_THROWS_WITH_AS(summarize(bad), "sample summary: value 2 is not finite", InputError);
 }
+
+TEST_CASE("the summary of sorted values is the numpy one too") {
+  // The same sample as above, ascending: summarize_sorted must give summarize's numbers, which
+  // are numpy's (it is what summarize calls after sorting, and growthuq sample calls directly
+  // on a column ordered by its strata).
+  const std::vector<double> sorted{-1.0, 0.4, 2.2, 2.2, 3.1, 7.5, 10.0};
+  const SampleSummary s = summarize_sorted(sorted);
+  CHECK(s.count == 7);
+  CHECK(s.p10 == doctest::Approx(-0.1599999999999998).epsilon(4e-16));
+  CHECK(s.q1 == doctest::Approx(1.3).epsilon(4e-16));
+  CHECK(s.median == 2.2);
+  CHECK(s.q3 == doctest::Approx(5.3).epsilon(4e-16));
+  CHECK(s.p90 == doctest::Approx(8.5).epsilon(4e-16));
+  CHECK_THROWS_AS(summarize_sorted({}), InputError);
+}

@@ -4,12 +4,12 @@
 #pragma once
 
 #include <cstddef>
-#include <fstream>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "growthuq/campaign/line_result.hpp"
+#include "growthuq/io/output_file.hpp"
 
 namespace growthuq {
 
@@ -21,10 +21,8 @@ class SamplesCsvWriter {
  public:
   // InputError naming the path when the file cannot be created. An existing file at `path`
   // is replaced by finish() (the caller has already refused or allowed that).
+  // Destroyed before finish(), it removes the .partial file (PartialFile).
   SamplesCsvWriter(std::string path, std::vector<std::string> columns);
-  SamplesCsvWriter(const SamplesCsvWriter&) = delete;
-  SamplesCsvWriter& operator=(const SamplesCsvWriter&) = delete;
-  ~SamplesCsvWriter();  // removes the .partial file when finish() was not reached
 
   // Appends the line's rows: `sample` counts from 0 within the line; a value that is not
   // finite (a flagged sample's output) is an empty cell.
@@ -34,11 +32,8 @@ class SamplesCsvWriter {
   void finish();
 
  private:
-  std::string path_;
-  std::string partial_;
+  PartialFile file_;
   std::vector<std::string> columns_;
-  std::ofstream out_;
-  bool finished_ = false;
 };
 
 // The columns of summary.csv, in order.

@@ -52,9 +52,9 @@ struct RunFootprint {
 // 8 (o + 1) bytes per sample and line.
 RunFootprint estimate_run_footprint(const RunShape& shape);
 
-// `growthuq sample`: the design of `variables` columns, its working set (20 m + 36 bytes per
-// sample, as a campaign line's) and its CSV text (about 19 bytes per value) are in memory at
-// once: 32 m + 36 + 19 m + 2 bytes per sample, plus 40 MB and the block pool; disk the text.
+// `growthuq sample`: the design of `variables` columns (12 bytes per value) and what computing
+// and summarizing it needs besides, measured 112 bytes per sample for 7 variables: 16 m + 16
+// bytes per sample, plus 40 MB and the block pool; disk its CSV text, about 19 bytes per value.
 RunFootprint estimate_design_footprint(std::size_t samples, std::size_t variables);
 
 // MemAvailable of /proc/meminfo (what can be allocated without swapping), if readable.

@@ -22,4 +22,7 @@ struct SampleSummary {
 // sample or a non-finite value.
 SampleSummary summarize(std::span<const double> values);
 
+// The same of values already in ascending order (not checked).
+SampleSummary summarize_sorted(std::span<const double> sorted);
+
 }  // namespace growthuq
