@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
-#include <cstring>
 #include <limits>
 #include <map>
 #include <memory>
@@ -497,10 +496,8 @@ RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunO
     return processes == 1 || line_index == 0 ? 0 : 1 + static_cast<int>((line_index - 1) % static_cast<std::size_t>(processes - 1));
   };
   std::map<std::size_t, LineDesign> held;  // designs this process made of lines not yet shared
-  const auto design_ahead = [&](std::size_t line_index) {
-    const auto start = Clock::now();
+  const auto make_design = [&](std::size_t line_index) {
     held.emplace(line_index, campaign.design(campaign.lines()[line_index]));
-    outcome.timings.design += seconds_since(start);
   };
   for (std::size_t index = 0; index < line_count; ++index) {
     const PreparedLine& line = campaign.lines()[index];
@@ -509,10 +506,8 @@ RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunO
     observer_failure.run(pool, [&] { observer.line_started(line, n); });
     auto start = Clock::now();
     if (index == 0 || processes == 1) {
-      if (pool.is_coordinator()) held.emplace(index, campaign.design(line));
-      if (index == 0 && processes > 1 && line_count > 1 && pool.rank() == designer_of(1)) {
-        held.emplace(1, campaign.design(campaign.lines()[1]));
-      }
+      if (pool.is_coordinator()) make_design(index);
+      if (index == 0 && processes > 1 && line_count > 1 && pool.rank() == designer_of(1)) make_design(1);
     }
     auto design = std::make_shared<LineDesign>();
     const int designer = designer_of(index);
@@ -649,7 +644,11 @@ RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunO
       pool.gather(std::move(mine));
     }
     outcome.timings.statistics += seconds_since(start);
-    if (pool.rank() == next_designer) design_ahead(next);
+    if (pool.rank() == next_designer) {
+      start = Clock::now();
+      make_design(next);
+      outcome.timings.design += seconds_since(start);
+    }
   }
   finish_previous_line();
   observer_failure.share(pool);

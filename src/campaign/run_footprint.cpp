@@ -114,6 +114,14 @@ std::optional<std::uint64_t> available_disk_bytes(const std::string& directory) 
   return static_cast<std::uint64_t>(space.f_bavail) * space.f_frsize;
 }
 
+MachineRoom machine_room(int processes, const std::optional<std::string>& output_directory) {
+  MachineRoom room;
+  room.memory_bytes = available_memory_bytes();
+  if (output_directory) room.disk_bytes = available_disk_bytes(*output_directory);
+  room.processes = processes;
+  return room;
+}
+
 void require_room(const RunFootprint& footprint, const MachineRoom& room, std::string_view location,
                   std::string_view samples_key) {
   const auto refuse = [&](const std::string& need, std::uint64_t fitting) {

@@ -140,17 +140,11 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
   const bool resuming = values.count("resume") != 0;
   on_coordinator(pool, [&] {
     const RunShape shape = run_shape(*prepared, !resuming && settings.checkpointing == Checkpointing::start);
-    MachineRoom room;
-    room.memory_bytes = available_memory_bytes();
-    room.disk_bytes = available_disk_bytes(prepared->campaign().output_dir);
-    room.processes = pool.processes_on_this_machine();
-    if (resuming) {
-      require_room(estimate_run_footprint(shape), room, checkpoint_manifest_path(options.resume), "samples");
-    } else if (values.count("samples")) {
-      require_room(estimate_run_footprint(shape), room, location, "--samples");
-    } else {
-      require_room(estimate_run_footprint(shape), room, options.campaign, "[campaign] samples");
-    }
+    // The count is named where the user gave it.
+    const bool from_flag = !resuming && values.count("samples") != 0;
+    const std::string where = resuming ? checkpoint_manifest_path(options.resume) : from_flag ? std::string(location) : options.campaign;
+    require_room(estimate_run_footprint(shape), machine_room(pool.processes_on_this_machine(), prepared->campaign().output_dir),
+                 where, resuming ? "samples" : from_flag ? "--samples" : "[campaign] samples");
   });
 
   // From here a first Ctrl-C or SIGTERM stops the pool at the next chunk (the coordinator's

@@ -164,10 +164,8 @@ int run_sample(const Arguments& arguments) {
 
   const LineDistributions line = read_line_file(options.line_file);
   // A design this machine cannot hold is refused now rather than killed part way (run_footprint.hpp).
-  MachineRoom room;
-  room.memory_bytes = available_memory_bytes();
-  room.disk_bytes = available_disk_bytes(fs::path(options.out).parent_path().string());
-  require_room(estimate_design_footprint(sampling.samples, line.variables.size()), room, "growthuq sample", "--samples");
+  require_room(estimate_design_footprint(sampling.samples, line.variables.size()),
+               machine_room(1, fs::path(options.out).parent_path().string()), "growthuq sample", "--samples");
   std::optional<RankCorrelationFile> correlation;
   if (!options.rank_correlation_file.empty()) correlation = read_rank_correlation_csv(options.rank_correlation_file);
 

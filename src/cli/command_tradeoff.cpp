@@ -110,10 +110,7 @@ int run_tradeoff_command(const TradeoffOptions& options, const po::variables_map
       RunShape shape = run_shape(validated, false);
       shape.samples = counts.back();
       shape.csv = shape.hdf5 = false;
-      MachineRoom room;
-      room.memory_bytes = available_memory_bytes();
-      room.processes = pool.processes_on_this_machine();
-      require_room(estimate_run_footprint(shape), room, location, "--samples-list");
+      require_room(estimate_run_footprint(shape), machine_room(pool.processes_on_this_machine()), location, "--samples-list");
     });
   }
 

@@ -72,6 +72,10 @@ struct MachineRoom {
   int processes = 1;
 };
 
+// This machine's room: MemAvailable for `processes` processes of the run, and the free space
+// where `output_directory` is (not checked when absent).
+MachineRoom machine_room(int processes, const std::optional<std::string>& output_directory = std::nullopt);
+
 // InputError "<location>: <samples_key> = '<samples>': the run needs about ..." (location and
 // key as the user gave the count: "growthuq run" and "--samples", or the campaign file and
 // "[campaign] samples") when the estimate, with a tenth kept back for everything else on the
