@@ -1,6 +1,10 @@
 #include "growthuq/evaluation/evaluator.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <utility>
 
 #include "growthuq/core/error.hpp"
 
@@ -53,8 +57,59 @@ std::vector<const Evaluator*> plan_evaluation(std::span<const Evaluator* const> 
   return plan;
 }
 
+namespace {
+
+[[noreturn]] void broken_declaration(const Evaluator& evaluator, const std::string& what) {
+  throw std::logic_error("evaluator '" + std::string(evaluator.name()) + "' broke its declaration: " + what);
+}
+
+}  // namespace
+
+void evaluate_checked(const Evaluator& evaluator, SampleBlock& block) {
+  const std::vector<std::string> writes = evaluator.writes();
+  // What the evaluator may not change: the columns it does not declare, and the flags.
+  std::vector<std::pair<std::string, std::vector<double>>> kept;
+  for (std::string& quantity : block.quantities()) {
+    if (contains(writes, quantity)) continue;
+    const std::span<const double> values = std::as_const(block).column(quantity);
+    kept.emplace_back(std::move(quantity), std::vector<double>(values.begin(), values.end()));
+  }
+  const std::span<const SampleStatus> status = std::as_const(block).status();
+  const std::vector<SampleStatus> status_before(status.begin(), status.end());
+
+  evaluator.evaluate(block);
+
+  for (const std::string& quantity : block.quantities()) {
+    const bool known = contains(writes, quantity) ||
+                       std::any_of(kept.begin(), kept.end(), [&](const auto& column) { return column.first == quantity; });
+    if (!known) broken_declaration(evaluator, "it added the column '" + quantity + "', which writes() does not name");
+  }
+  for (const auto& [quantity, values] : kept) {
+    const std::span<const double> after = std::as_const(block).column(quantity);
+    if (std::memcmp(after.data(), values.data(), values.size() * sizeof(double)) != 0) {
+      broken_declaration(evaluator, "it changed the column '" + quantity + "', which writes() does not name");
+    }
+  }
+  for (std::size_t i = 0; i < block.size(); ++i) {
+    if (status_before[i] != SampleStatus::ok && status[i] != status_before[i]) {
+      broken_declaration(evaluator, "it changed the status of sample " + std::to_string(i) + " from " +
+                                        std::string(to_string(status_before[i])) + " to " + std::string(to_string(status[i])));
+    }
+  }
+  for (const std::string& quantity : writes) {
+    if (!block.has(quantity)) broken_declaration(evaluator, "it did not write the declared column '" + quantity + "'");
+    const std::span<const double> values = std::as_const(block).column(quantity);
+    for (std::size_t i = 0; i < block.size(); ++i) {
+      if (status[i] == SampleStatus::ok && !std::isfinite(values[i])) {
+        broken_declaration(evaluator, "the declared column '" + quantity + "' holds " + std::to_string(values[i]) +
+                                          " for sample " + std::to_string(i) + ", whose status is ok");
+      }
+    }
+  }
+}
+
 void run_plan(std::span<const Evaluator* const> plan, SampleBlock& block) {
-  for (const Evaluator* evaluator : plan) evaluator->evaluate(block);
+  for (const Evaluator* evaluator : plan) evaluate_checked(*evaluator, block);
 }
 
 }  // namespace growthuq
