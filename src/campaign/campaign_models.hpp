@@ -12,8 +12,8 @@
 
 namespace growthuq {
 
-// The campaign's models: the thin-shell turgor (p from k, d, d0) and modulus (E from p, d, d0, h)
-// of the campaign's instrument, the viscosity (eta from tau, einf, E) and the growth law (v from
+// The campaign's models: the turgor and modulus of its fidelity (thin_shell: p from k, d, d0
+// and E from p, d, d0, h, for the campaign's instrument), the viscosity (eta from tau, einf, E) and the growth law (v from
 // p, d, eta, h) at the campaign's yield pressure, with kappa = 1: the run calibrates kappa on the
 // reference line and scales v after (kappa.hpp).
 std::vector<std::unique_ptr<const Evaluator>> campaign_models(const Campaign& campaign);

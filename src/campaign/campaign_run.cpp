@@ -11,6 +11,7 @@
 #include "campaign/campaign_models.hpp"
 #include "campaign/chunk_values.hpp"
 #include "campaign/column_statistics.hpp"
+#include "campaign/coordinator_failure.hpp"
 #include "campaign/design_sharing.hpp"
 #include "campaign/line_schedule.hpp"
 #include "growthuq/campaign/line_source.hpp"
@@ -177,52 +178,11 @@ StatusSet PreparedCampaign::valued_statuses(const PreparedLine& line, std::strin
   return {};
 }
 
-namespace {
-
-// What the coordinator's action threw, to be raised on every process when they next meet
-// (share): the coordinator's work after a line (handing it to the writers) then holds nobody up,
-// and a failure still stops every process at the same point.
-class CoordinatorFailure {
- public:
-  // On the coordinator: action(), unless an earlier action failed; what it throws is kept.
-  void run(Pool& pool, const std::function<void()>& action) {
-    if (!pool.is_coordinator() || failure_) return;
-    try {
-      action();
-    } catch (const InputError& error) {
-      message_ = "I" + error.location() + '\0' + error.problem();
-      failure_ = std::current_exception();
-    } catch (const std::exception& error) {
-      message_ = std::string("E") + '\0' + error.what();
-      failure_ = std::current_exception();
-    }
-  }
-
-  // Every process: raises the kept failure everywhere (InputError as InputError, anything else
-  // as std::runtime_error; on the coordinator the original exception).
-  void share(Pool& pool) {
-    // Message layout: kind ('I' InputError, 'E' other), location, NUL, problem.
-    const std::string message = pool.broadcast(message_);
-    if (failure_) std::rethrow_exception(failure_);
-    if (message.empty()) return;
-    const std::size_t separator = message.find('\0');
-    if (message[0] == 'I') throw InputError(message.substr(1, separator - 1), message.substr(separator + 1));
-    throw std::runtime_error(message.substr(separator + 1));
-  }
-
- private:
-  std::string message_;
-  std::exception_ptr failure_;
-};
-
-}  // namespace
-
 void on_coordinator(Pool& pool, const std::function<void()>& action) {
   CoordinatorFailure failure;
   failure.run(pool, action);
   failure.share(pool);
 }
-
 
 namespace {
 
@@ -269,10 +229,6 @@ LineResult assemble_result(const PreparedCampaign& campaign, const PreparedLine&
     result.achieved_spearman = spearman_matrix_of_ranks(ranks);
   }
   return result;
-}
-
-bool contains_output(const std::vector<std::string>& outputs, std::string_view quantity) {
-  return std::find(outputs.begin(), outputs.end(), quantity) != outputs.end();
 }
 
 // The steps of run_campaign_lines and what they share: the schedule, the designs made ahead,
@@ -390,7 +346,7 @@ class LineRun {
       const bool by_strata = c < design->ranks.size() && design->strictly_increasing[c] != 0;
       ColumnStatistics column = column_statistics(
           layout.columns[c], values[c], by_strata ? std::span<const std::uint32_t>(design->ranks[c]) : std::span<const std::uint32_t>{},
-          evaluated->status, *used, contains_output(campaign_.campaign().outputs, layout.columns[c].quantity));
+          evaluated->status, *used, contains(campaign_.campaign().outputs, layout.columns[c].quantity));
       if (pool_.is_coordinator()) {
         (*statistics)[c] = std::move(column);
       } else {

@@ -1,18 +1,21 @@
 // The messages of a campaign run (a column's statistics, a process's batch of them, a design's
-// outline, an evaluated chunk) read back exactly what was written, bit for bit.
+// outline, an evaluated chunk, a coordinator's failure) read back exactly what was written.
 #include <doctest/doctest.h>
 
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "campaign/chunk_values.hpp"
 #include "campaign/column_statistics.hpp"
+#include "campaign/coordinator_failure.hpp"
 #include "campaign/design_sharing.hpp"
+#include "growthuq/core/error.hpp"
 
 using namespace growthuq;
 
@@ -140,4 +143,23 @@ TEST_CASE("an evaluated chunk reads back each output's column and each sample's 
     CHECK(chunk.status(i) == block.status()[i]);
   }
   CHECK_THROWS_AS(ChunkValues(std::span<const double>(packed).first(packed.size() - 1), 2), std::logic_error);
+}
+
+TEST_CASE("a coordinator's failure round-trips as an InputError or a plain error") {
+  const FailureMessage input{true, "campaigns/quick.ini:14", "probe_radius_um = '-1': expected a radius > 0"};
+  const std::optional<FailureMessage> read = FailureMessage::decode(input.encode());
+  REQUIRE(read.has_value());
+  CHECK(read->input_error);
+  CHECK(read->location == input.location);
+  CHECK(read->problem == input.problem);
+  CHECK_THROWS_WITH_AS(read->raise(), "campaigns/quick.ini:14: probe_radius_um = '-1': expected a radius > 0", InputError);
+
+  const FailureMessage other{false, "", std::string("disk full\0 and more", 18)};
+  const std::optional<FailureMessage> read_other = FailureMessage::decode(other.encode());
+  REQUIRE(read_other.has_value());
+  CHECK_FALSE(read_other->input_error);
+  CHECK(read_other->location.empty());
+  CHECK(read_other->problem == other.problem);
+  CHECK_THROWS_AS(read_other->raise(), std::runtime_error);
+  CHECK_FALSE(FailureMessage::decode("").has_value());
 }

@@ -49,13 +49,14 @@ std::vector<const Evaluator*> plan_evaluation(std::span<const Evaluator* const> 
 //     sample carries a non-ok status (a written column left NaN for an ok sample was not
 //     written);
 //   - no column outside writes() was added, and every column it found that writes() does not
-//     name (its reads among them) holds the same bits as before;
+//     name (its reads among them) holds the same bits as before (compared through a
+//     position-keyed checksum of each column, so the check reads the block without copying it);
 //   - a sample that entered with a non-ok status leaves with that status (the first flag stays).
 // std::logic_error naming the evaluator, the column and the sample otherwise: a model that
 // breaks its declaration is a bug, stopped at the first batch it breaks.
 void evaluate_checked(const Evaluator& evaluator, SampleBlock& block);
 
-// Runs `plan` in order on `block`, each evaluator through evaluate_checked.
+// Runs `plan` in order on `block`, each evaluator checked as evaluate_checked checks it.
 void run_plan(std::span<const Evaluator* const> plan, SampleBlock& block);
 
 }  // namespace growthuq
