@@ -245,9 +245,7 @@ class LineRun {
     if (campaign.calibrates_kappa()) kappa_.emplace(campaign.kappa_calibration());
   }
 
-  // The observer sees each line started after the previous one is finished.
   void start(std::size_t index) {
-    finish_previous();
     observer_failure_.run(pool_, [&] { observer_.line_started(campaign_.lines()[index], samples_); });
   }
 
@@ -370,7 +368,8 @@ class LineRun {
     outcome_.timings.design += seconds_since(start);
   }
 
-  // Coordinator: the line whose statistics were computed last, handed to the observer.
+  // Coordinator: the line whose statistics were computed last, handed to the observer (the
+  // others need nothing from it; a failure reaches them at the next design, or at end()).
   void finish_previous() {
     if (!finish_line_) return;
     const auto start = Clock::now();
@@ -380,7 +379,6 @@ class LineRun {
   }
 
   RunOutcome end() {
-    finish_previous();
     observer_failure_.share(pool_);
     if (kappa_) outcome_.kappa = kappa_->kappa();
     return outcome_;
@@ -456,13 +454,15 @@ LineStatistics line_statistics(const LineResult& result, const std::vector<std::
 RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunObserver& observer, ChunkJournal* journal) {
   LineRun run(campaign, pool, observer, journal);
   for (std::size_t line = 0; line < campaign.lines().size(); ++line) {
-    run.start(line);  // finishes the line before
+    run.finish_previous();  // the observer sees each line finished before the next one starts
+    run.start(line);
     const std::shared_ptr<LineDesign> design = run.design(line);
     const std::shared_ptr<LineOutputs> outputs = run.evaluate(line, *design);
     run.share(*outputs);
-    run.statistics(line, design, outputs);  // finished by the coordinator when the next line starts
-    run.design_ahead(line);
+    run.statistics(line, design, outputs);  // the coordinator finishes the line when the next one starts
+    run.design_ahead(line);                 // the next line's designer, meanwhile
   }
+  run.finish_previous();
   return run.end();
 }
 
