@@ -1,7 +1,7 @@
 // Benchmark (not a test): the fast per-sample chain of a campaign, thin-shell turgor and
 // modulus, viscosity from relaxation distributions, and growth rate, on one SampleBlock of
 // physiological random tubes (default 1e7), single thread. Prints samples per second per
-// evaluator and for the chain; tools/bench-evaluators builds and runs it. --block-size B
+// evaluator and for the chain; tools/bench/bench-evaluators builds and runs it. --block-size B
 // instead runs the chain block by block (B samples each), as a Monte Carlo driver would.
 #include <algorithm>
 #include <chrono>

@@ -2,7 +2,7 @@
 """numpy/scipy peer of `growthuq run CAMPAIGN --formats hdf5`, for a side-by-side timing.
 
 The same campaign, step for step, written as a competent vectorized numpy/scipy program
-(tools/bench-campaign runs both and compares them):
+(tools/bench/bench-campaign runs both and compares them):
 
   design      per line: the `physics` rank correlation (uniform (p, E, h, d0) draws, forward
               thin-shell model with scipy's Lambert W, Spearman of (k, h, d, d0) over the tubes
@@ -28,7 +28,7 @@ Random numbers come from numpy's default Generator (PCG64) seeded from the campa
 the line name, so results agree with the engine statistically, not bit for bit. Run it single
 threaded (OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1). Per-phase wall times go to stderr.
 
-  /usr/bin/python3 tools/peer_campaign.py --campaign campaigns/arabidopsis_2022.ini \
+  /usr/bin/python3 tools/bench/peer_campaign.py --campaign campaigns/arabidopsis_2022.ini \
       --samples 1000000 --out /tmp/peer_run
 """
 import argparse
