@@ -39,8 +39,8 @@ LineDistributions truth_of(const std::string& line) {
   return read_line_file(std::string(GROWTHUQ_SOURCE_DIR) + "/distributions/" + line + ".ini");
 }
 
-// A wild-type-like tube (PHYSICS.md section 7): p from k = 2.87, d = 6.56, d0 = 5.35 um at rho
-// 0.5 um is 0.2528 MPa.
+// A wild-type-like tube (published data, distributions/README.md): p from k = 2.87, d = 6.56,
+// d0 = 5.35 um at rho 0.5 um is 0.2528 MPa.
 RelaxationTube wild_type_tube() {
   RelaxationTube tube;
   tube.turgor = 0.2528e6;

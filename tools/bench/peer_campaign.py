@@ -234,7 +234,7 @@ class Line:
 
 
 # ---------------------------------------------------------------------------------------------
-# Mechanics (PHYSICS.md sections 3 and 4)
+# Mechanics (Eqs. (M1)-(M16), src/mechanics/README.md)
 
 def arnoldi_phi(x):
     """phi(x) = x K1(x)/K0(x): scaled Bessel functions, series below 1e-5, Hankel above 1e3."""
@@ -257,7 +257,7 @@ MASK64 = 0xffffffffffffffff
 
 
 def mix64(x):
-    """The SplitMix64 finalizer (README, Random numbers)."""
+    """The SplitMix64 finalizer (Eq. (S3), src/sampling/README.md)."""
     x = (x + 0x9e3779b97f4a7c15) & MASK64
     x = ((x ^ (x >> 30)) * 0xbf58476d1ce4e5b9) & MASK64
     x = ((x ^ (x >> 27)) * 0x94d049bb133111eb) & MASK64
@@ -395,7 +395,7 @@ def evaluate(line, campaign, si):
 
 
 # ---------------------------------------------------------------------------------------------
-# Sampling (PHYSICS.md section 2)
+# Sampling (src/sampling/README.md and src/correlation/README.md)
 
 def nearest_correlation(a, floor=1e-6, tolerance=1e-12, iterations=1000):
     """Higham (2002) alternating projections with Dykstra's correction, eigenvalues >= floor."""

@@ -19,7 +19,8 @@ Z75 = ndtri(0.75)
 
 
 def lognormal(median, iqr):
-    """mu, sigma of the lognormal with this median and IQR (PHYSICS.md section 1)."""
+    """mu, sigma of the lognormal with this median and IQR (Eq. (D1),
+    src/distributions/README.md)."""
     return np.log(median), np.arcsinh(iqr / (2 * median)) / Z75
 
 

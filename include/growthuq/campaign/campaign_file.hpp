@@ -23,7 +23,7 @@ namespace growthuq {
 enum class CorrelationSource {
   none,     // independent variables
   file,     // a matrix CSV (header row of names, then the matrix)
-  physics,  // derived from the forward thin-shell model (PHYSICS.md section 4)
+  physics,  // derived from the forward thin-shell model (Eq. (M16), src/mechanics/README.md)
 };
 
 // Which model turns measurements into turgor and modulus. Only the thin shell exists today;

@@ -1,7 +1,7 @@
 // One synthetic stress-relaxation experiment with a known truth: a tube whose wall relaxes as
 // E_r(t) / E_r(0) = e_inf + (1 - e_inf) [s exp(-t / tau_fast) + (1 - s) exp(-t / tau_slow)]
-// (the two phases of PHYSICS.md section 5; s is the fast share of the relaxing part), indented
-// by the ramp-and-hold protocol of the experiment simulator (relaxation/simulator.hpp).
+// (the two phases of Eq. (R4), src/relaxation/README.md; s is the fast share of the relaxing part),
+// indented by the ramp-and-hold protocol of the experiment simulator (relaxation/simulator.hpp).
 //
 // The probe sees the stiffness k(t) = k(E_r(t)) of the forward Arnoldi relation at the tube's p,
 // d, h and rho (relaxation_stiffness). The simulator needs a generalized Maxwell contact with
