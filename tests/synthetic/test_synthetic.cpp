@@ -251,7 +251,8 @@ TEST_CASE("synth: the raw data set reads back as a raw line, its curves fit to t
   // Per curve against its truth: tau_slow within 4 of its own reported standard errors plus
   // 0.5 %; einf within 0.03. The step fit's einf is biased high by the first hold sample
   // falling after the ramp's end (up to one 20 ms sample of the fast phase): +0.005 on average,
-  // measured over the shipped set (README); 0.03 is 5 standard deviations of its scatter.
+  // measured over the shipped set (distributions/README.md); 0.03 is 5 standard deviations of its
+  // scatter.
   std::size_t ok = 0;
   double einf_bias = 0.0;
   for (std::size_t c = 0; c < tau.size(); ++c) {

@@ -1,6 +1,7 @@
 // A campaign: which plant lines to sample, how many samples, which outputs, the instrument,
-// the growth parameters and where results go. Read from an INI file (format in the README),
-// validated completely before any work starts; command-line flags then override some keys.
+// the growth parameters and where results go. Read from an INI file (format in
+// campaigns/README.md), validated completely before any work starts; command-line flags then
+// override some keys.
 //
 // The file is read with the engine's INI reader rather than Boost.Program_options'
 // parse_config_file because every error must name the line it comes from, which
