@@ -1,11 +1,11 @@
 // The run of a campaign over its plant lines, all processes taking part. Per line: its design
 // is made whole by one process, one line ahead of the run (which one: line_schedule.hpp) and
 // shared to every process; its samples are evaluated through the Pool in chunks (or replayed
-// from a checkpoint), v scaled by kappa, which the reference line calibrates (kappa.hpp); the
-// evaluated outputs go to every process, which compute the statistics (summaries, ranks,
-// correlation matrices, principal components) column by column; the coordinating process
-// gathers them, assembles the line (LineResult, LineStatistics) and hands it to an observer,
-// which writes it, while the next line is being designed.
+// from a checkpoint), v scaled by kappa, which the reference line calibrates (kappa.hpp, Eq.
+// (G5) of src/growth/README.md); the evaluated outputs go to every process, which compute the
+// statistics (summaries, ranks, correlation matrices, principal components) column by column;
+// the coordinating process gathers them, assembles the line (LineResult, LineStatistics) and
+// hands it to an observer, which writes it, while the next line is being designed.
 #pragma once
 
 #include <cstddef>

@@ -42,7 +42,7 @@ struct LineResult {
   std::size_t samples() const { return status.size(); }
 };
 
-// The per-line, per-quantity row of summary.csv (PHYSICS.md: median, IQR, 10-90 %).
+// The per-line, per-quantity row of summary.csv (src/stats/README.md: median, IQR, 10-90 %).
 // Statistics are over the samples whose value is a result (has_value: status ok, or one of
 // the column's valued statuses, e.g. no_growth for v = 0); n_flagged counts the others.
 struct QuantitySummary {

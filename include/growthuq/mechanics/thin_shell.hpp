@@ -1,7 +1,8 @@
-// The fast thin-shell model of a pressurized pollen tube (PHYSICS.md section 3): hoop
-// equilibrium with logarithmic strain (Vogler et al. 2013) plus the apparent stiffness under a
-// probe (Arnoldi et al. 2000). Closed-form inverse (k, d, d0 [, h] -> p [, E]) and the forward
-// model (p, E, h, d0 -> d, k). Per-sample functions, SI units, a status instead of NaN.
+// The fast thin-shell model of a pressurized pollen tube (Eqs. (M1)-(M10),
+// src/mechanics/README.md): hoop equilibrium with logarithmic strain (Vogler et al. 2013) plus the
+// apparent stiffness under a probe (Arnoldi et al. 2000). Closed-form inverse (k, d, d0 [, h] -> p
+// [, E]) and the forward model (p, E, h, d0 -> d, k). Per-sample functions, SI units, a status
+// instead of NaN.
 #pragma once
 
 #include <limits>
@@ -16,7 +17,7 @@ struct ThinShellParameters {
   // Probe radius rho [m]. Required: it dominates the answer (p falls ~2x from rho = 0.25 to
   // 1 um), so there is no default; NaN until set, and validate() rejects it.
   double probe_radius = std::numeric_limits<double>::quiet_NaN();
-  // Poisson ratio nu of the wall, in [0, 1); 0.2 as in the published FEM (Burri et al. 2019).
+  // Poisson ratio nu of the wall, in [0, 1); 0.2 as in the published FEM (distributions/README.md).
   double poisson_ratio = 0.2;
   // Sensor stiffness k_sys [N/m] in series with the tube, > 0; +inf (an ideal sensor) by default.
   double sensor_stiffness = std::numeric_limits<double>::infinity();
