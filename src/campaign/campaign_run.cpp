@@ -3,12 +3,17 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <map>
 #include <memory>
 #include <stdexcept>
 
+#include "campaign/campaign_models.hpp"
+#include "campaign/chunk_values.hpp"
+#include "campaign/column_statistics.hpp"
+#include "campaign/coordinator_failure.hpp"
+#include "campaign/design_sharing.hpp"
+#include "campaign/line_schedule.hpp"
 #include "growthuq/campaign/line_source.hpp"
 #include "growthuq/campaign/shared_raw_fits.hpp"
 #include "growthuq/core/error.hpp"
@@ -55,26 +60,6 @@ std::optional<RankCorrelationFile> restricted(const std::string& path, const std
   return result;
 }
 
-// Which process does each of `costs.size()` pieces of work: the next piece (in the order given)
-// goes to the process with the least work so far, the coordinator starting with
-// `coordinator_load` for what it alone does; ties go to the highest rank. Process `left_out`
-// (if > 0) gets none.
-std::vector<int> share_out(const std::vector<double>& costs, int processes, double coordinator_load, int left_out = -1) {
-  std::vector<double> load(static_cast<std::size_t>(processes), 0.0);
-  load[0] = coordinator_load;
-  if (left_out > 0) load[static_cast<std::size_t>(left_out)] = std::numeric_limits<double>::infinity();
-  std::vector<int> owner;
-  for (const double cost : costs) {
-    int best = processes - 1;
-    for (int p = processes - 1; p >= 0; --p) {
-      if (load[static_cast<std::size_t>(p)] < load[static_cast<std::size_t>(best)]) best = p;
-    }
-    owner.push_back(best);
-    load[static_cast<std::size_t>(best)] += cost;
-  }
-  return owner;
-}
-
 }  // namespace
 
 std::uint64_t physics_correlation_seed(std::uint64_t campaign_seed, std::string_view line) {
@@ -88,11 +73,11 @@ PreparedCampaign::PreparedCampaign(Campaign campaign, Pool& pool, ProgressMode p
 
 PreparedCampaign::PreparedCampaign(Campaign campaign, Pool* pool, ProgressMode progress, std::ostream* log)
     : campaign_(std::move(campaign)),
-      turgor_(campaign_.instrument, campaign_.path),
-      growth_(GrowthParameters{campaign_.yield_pressure, 1.0}),
+      models_(campaign_models(campaign_)),
       experimental_median_(std::numeric_limits<double>::quiet_NaN()) {
-  calibrates_kappa_ = wants(campaign_, "v");
-  const std::vector<const Evaluator*> available{&turgor_, &modulus_, &viscosity_, &growth_};
+  calibrates_kappa_ = wants(campaign_, KappaCalibration::quantity);
+  std::vector<const Evaluator*> available;
+  for (const std::unique_ptr<const Evaluator>& model : models_) available.push_back(model.get());
 
   for (const CampaignLine& campaign_line : campaign_.lines) {
     PreparedLine line;
@@ -171,80 +156,6 @@ LineDesign PreparedCampaign::design(const PreparedLine& line) const {
   return sample_line(line.design_variables, options, line.correlation ? &*line.correlation : nullptr);
 }
 
-namespace {
-
-// Bytes of a trivially copyable value, appended to and read from a message.
-template <class T>
-void append_bytes(std::string& message, const T& value) {
-  message.append(reinterpret_cast<const char*>(&value), sizeof value);
-}
-template <class T>
-T read_bytes(const std::string& message, std::size_t& at) {
-  T value;
-  std::memcpy(&value, message.data() + at, sizeof value);
-  at += sizeof value;
-  return value;
-}
-
-// Sends the design process `owner` made of `line` to every other process: its columns, and for
-// the coordinator's report its target and warnings (the rest of the outline is not used past
-// the design; names are the line's variables).
-void share_design(LineDesign& design, const PreparedLine& line, std::size_t samples, int owner, Pool& pool) {
-  const std::size_t columns = line.design_variables.variables.size();
-  const bool mine = pool.rank() == owner;
-  if (!mine) {
-    design.names.clear();
-    for (const LineVariable& variable : line.design_variables.variables) design.names.push_back(variable.name);
-    design.ranks.resize(columns);
-    design.values.resize(columns);
-    design.strictly_increasing.assign(columns, 0);
-  }
-  for (std::size_t j = 0; j < columns; ++j) {
-    pool.broadcast_vector(design.ranks[j], samples, owner);
-    pool.broadcast_vector(design.values[j], samples, owner);
-  }
-  pool.broadcast_bytes(std::as_writable_bytes(std::span(design.strictly_increasing)), owner);
-
-  // The message: m, the m x m target Spearman matrix (m = 0: none), then each warning's length
-  // and text.
-  std::string message;
-  if (mine) {
-    const Eigen::Index m = design.target ? design.target->target_spearman.rows() : 0;
-    append_bytes(message, static_cast<std::uint64_t>(m));
-    for (Eigen::Index a = 0; a < m; ++a) {
-      for (Eigen::Index b = 0; b < m; ++b) append_bytes(message, design.target->target_spearman(a, b));
-    }
-    for (const std::string& warning : design.warnings) {
-      append_bytes(message, static_cast<std::uint64_t>(warning.size()));
-      message += warning;
-    }
-  }
-  std::uint64_t size = message.size();
-  pool.broadcast_bytes(std::as_writable_bytes(std::span(&size, 1)), owner);
-  message.resize(size);
-  pool.broadcast_bytes(std::as_writable_bytes(std::span(message.data(), message.size())), owner);
-  if (mine) return;
-  std::size_t at = 0;
-  const auto m = static_cast<Eigen::Index>(read_bytes<std::uint64_t>(message, at));
-  if (m > 0) {
-    ImanConoverTarget target;
-    target.names = design.names;
-    target.target_spearman.resize(m, m);
-    for (Eigen::Index a = 0; a < m; ++a) {
-      for (Eigen::Index b = 0; b < m; ++b) target.target_spearman(a, b) = read_bytes<double>(message, at);
-    }
-    design.target = std::move(target);
-  }
-  design.warnings.clear();
-  while (at < message.size()) {
-    const auto length = static_cast<std::size_t>(read_bytes<std::uint64_t>(message, at));
-    design.warnings.push_back(message.substr(at, length));
-    at += length;
-  }
-}
-
-}  // namespace
-
 std::vector<double> PreparedCampaign::evaluate_chunk(const PreparedLine& line, const LineDesign& design,
                                                      ChunkRange range) const {
   const std::size_t n = range.end - range.begin;
@@ -256,55 +167,16 @@ std::vector<double> PreparedCampaign::evaluate_chunk(const PreparedLine& line, c
     for (std::size_t i = 0; i < n; ++i) column[i] = design.values[j][range.begin + i] * to_si;
   }
   run_plan(line.plan, block);
-  std::vector<double> values;
-  values.reserve((computed_outputs_.size() + 1) * n);
-  for (const std::string& output : computed_outputs_) {
-    const std::span<const double> column = block.column(output);
-    values.insert(values.end(), column.begin(), column.end());
-  }
-  for (const SampleStatus status : block.status()) values.push_back(static_cast<double>(status));
-  return values;
+  return ChunkValues::pack(block, computed_outputs_);
 }
 
-namespace {
-
-// What the coordinator's action threw, to be raised on every process when they next meet
-// (share): the coordinator's work after a line (handing it to the writers) then holds nobody up,
-// and a failure still stops every process at the same point.
-class CoordinatorFailure {
- public:
-  // On the coordinator: action(), unless an earlier action failed; what it throws is kept.
-  void run(Pool& pool, const std::function<void()>& action) {
-    if (!pool.is_coordinator() || failure_) return;
-    try {
-      action();
-    } catch (const InputError& error) {
-      message_ = "I" + error.location() + '\0' + error.problem();
-      failure_ = std::current_exception();
-    } catch (const std::exception& error) {
-      message_ = std::string("E") + '\0' + error.what();
-      failure_ = std::current_exception();
-    }
+StatusSet PreparedCampaign::valued_statuses(const PreparedLine& line, std::string_view output) const {
+  for (const Evaluator* model : line.plan) {
+    const std::vector<std::string> writes = model->writes();
+    if (std::find(writes.begin(), writes.end(), output) != writes.end()) return model->valued_statuses(output);
   }
-
-  // Every process: raises the kept failure everywhere (InputError as InputError, anything else
-  // as std::runtime_error; on the coordinator the original exception).
-  void share(Pool& pool) {
-    // Message layout: kind ('I' InputError, 'E' other), location, NUL, problem.
-    const std::string message = pool.broadcast(message_);
-    if (failure_) std::rethrow_exception(failure_);
-    if (message.empty()) return;
-    const std::size_t separator = message.find('\0');
-    if (message[0] == 'I') throw InputError(message.substr(1, separator - 1), message.substr(separator + 1));
-    throw std::runtime_error(message.substr(separator + 1));
-  }
-
- private:
-  std::string message_;
-  std::exception_ptr failure_;
-};
-
-}  // namespace
+  return {};
+}
 
 void on_coordinator(Pool& pool, const std::function<void()>& action) {
   CoordinatorFailure failure;
@@ -319,16 +191,17 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // A line's LineResult without values: its name and columns (inputs in their line-file unit,
-// then outputs in their default unit).
+// then outputs in their default unit, with the statuses their models declare them valued under).
 LineResult result_layout(const PreparedCampaign& campaign, const PreparedLine& line) {
   LineResult result;
   result.name = line.campaign_line.name;
   for (const LineVariable& variable : line.design_variables.variables) {
-    result.columns.push_back(ResultColumn{variable.name, variable.unit, true, {}});
+    result.columns.push_back(ResultColumn{variable.name, variable.unit, true, {}, {}});
   }
   for (const std::string& output : campaign.computed_outputs()) {
     const Quantity* quantity = find_quantity(output);
-    result.columns.push_back(ResultColumn{output, &find_unit(quantity->default_unit, "quantity table", output), false, {}});
+    result.columns.push_back(ResultColumn{output, &find_unit(quantity->default_unit, "quantity table", output), false, {},
+                                          campaign.valued_statuses(line, output)});
   }
   return result;
 }
@@ -339,19 +212,6 @@ struct LineOutputs {
   std::vector<LargeVector<double>> columns;  // campaign.computed_outputs() order
   LargeVector<SampleStatus> status;
 };
-
-// v *= kappa. v is linear in kappa (growth_rate.hpp), so this equals evaluating with kappa;
-// a product that leaves the normal range is flagged like the growth evaluator would.
-void apply_kappa(std::span<double> v, std::span<SampleStatus> status, double kappa) {
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    if (status[i] != SampleStatus::ok) continue;
-    v[i] *= kappa;
-    if (!std::isnormal(v[i])) {
-      v[i] = std::numeric_limits<double>::quiet_NaN();
-      status[i] = SampleStatus::out_of_range;
-    }
-  }
-}
 
 // The coordinator's LineResult: the design's inputs and the evaluated outputs, moved in.
 LineResult assemble_result(const PreparedCampaign& campaign, const PreparedLine& line, LineDesign& design,
@@ -371,90 +231,212 @@ LineResult assemble_result(const PreparedCampaign& campaign, const PreparedLine&
   return result;
 }
 
-bool wants_summary(const std::vector<std::string>& outputs, std::string_view quantity) {
-  return std::find(outputs.begin(), outputs.end(), quantity) != outputs.end();
-}
+// The steps of run_campaign_lines and what they share: the schedule, the designs made ahead,
+// the kappa calibration, the line waiting to be finished, the timings.
+class LineRun {
+ public:
+  LineRun(const PreparedCampaign& campaign, Pool& pool, RunObserver& observer, ChunkJournal* journal)
+      : campaign_(campaign),
+        pool_(pool),
+        observer_(observer),
+        journal_(journal),
+        schedule_(campaign.lines().size(), pool.size()),
+        samples_(campaign.campaign().samples) {
+    if (campaign.calibrates_kappa()) kappa_.emplace(campaign.kappa_calibration());
+  }
 
-// One column's share of the line's statistics, as the pool carries it (doubles): its
-// ColumnAnalysis without the order statistics, and its summary when it has one.
-//   [verdict, count, mean, squared deviations, has summary,
-//    n, n_flagged, median, q1, q3, iqr, p10, p90, mean, sd, median_ci_low, median_ci_high,
-//    number of ranks, the ranks' bytes (two 32-bit ranks per double)]
-constexpr std::size_t column_header_size = 18;
+  void start(std::size_t index) {
+    observer_failure_.run(pool_, [&] { observer_.line_started(campaign_.lines()[index], samples_); });
+  }
 
-struct ColumnStatistics {
-  ColumnAnalysis analysis;
-  std::optional<QuantitySummary> summary;  // line, quantity and unit left empty
+  // The line's design on every process: made here if this process is its designer and has not
+  // made it ahead, then sent from the designer to the others.
+  std::shared_ptr<LineDesign> design(std::size_t index) {
+    const auto start = Clock::now();
+    for (const std::size_t line : schedule_.designed_at_start(index, pool_.rank())) make_design(line);
+    auto design = std::make_shared<LineDesign>();
+    const int designer = schedule_.designer_of(index);
+    if (const auto held = held_.find(index); held != held_.end()) {
+      *design = std::move(held->second);
+      held_.erase(held);
+    }
+    if (pool_.size() > 1) {
+      std::vector<std::string> names;
+      for (const LineVariable& variable : campaign_.lines()[index].design_variables.variables) names.push_back(variable.name);
+      share_design(*design, names, samples_, designer, pool_);
+    }
+    observer_failure_.share(pool_);  // a failure of the previous line's writing stops everyone here
+    outcome_.timings.design += seconds_since(start);
+    return design;
+  }
+
+  // The models over the line's samples in chunks through the pool (chunks the journal holds are
+  // replayed, new ones recorded); the coordinator collects the outputs, calibrates kappa on the
+  // reference line and scales v.
+  std::shared_ptr<LineOutputs> evaluate(std::size_t index, const LineDesign& design) {
+    const auto start = Clock::now();
+    const PreparedLine& line = campaign_.lines()[index];
+    const LineResult layout = result_layout(campaign_, line);
+    const std::size_t outputs = campaign_.computed_outputs().size();
+    auto evaluated = std::make_shared<LineOutputs>();
+    evaluated->columns.resize(outputs);
+    std::vector<double> to_si;
+    for (std::size_t o = 0; o < outputs; ++o) to_si.push_back(layout.columns[design.values.size() + o].unit->to_si);
+    if (pool_.is_coordinator()) {
+      for (LargeVector<double>& column : evaluated->columns) column.resize(samples_);  // every chunk writes its range
+      evaluated->status.resize(samples_);
+    }
+    const ChunkWork work = [&](ChunkRange range) { return campaign_.evaluate_chunk(line, design, range); };
+    const ChunkSink sink = [&](ChunkRange range, std::span<const double> values) {
+      const ChunkValues chunk(values, outputs);
+      const std::size_t size = range.end - range.begin;
+      if (chunk.samples() != size) throw std::logic_error("chunk of unexpected size");
+      for (std::size_t o = 0; o < outputs; ++o) {
+        const std::span<const double> in = chunk.output(o);
+        double* out = evaluated->columns[o].data() + range.begin;
+        for (std::size_t i = 0; i < size; ++i) out[i] = in[i] / to_si[o];
+      }
+      for (std::size_t i = 0; i < size; ++i) evaluated->status[range.begin + i] = chunk.status(i);
+      observer_.chunk_done(range);
+    };
+    const std::size_t chunk_size = campaign_.campaign().chunk_size;
+    if (journal_ == nullptr) {
+      pool_.run(samples_, chunk_size, work, sink);
+    } else {
+      on_coordinator(pool_, [&] { journal_->replay(index, sink); });  // a read error stops every process
+      const ChunkSink record_then_sink = [&](ChunkRange range, std::span<const double> values) {
+        journal_->record(index, range, values);
+        sink(range, values);
+      };
+      pool_.run(samples_, chunk_size, work, record_then_sink, [&](ChunkRange range) { return journal_->holds(index, range); });
+    }
+    if (kappa_) scale_growth(line, *evaluated, to_si);
+    outcome_.timings.evaluation += seconds_since(start);
+    return evaluated;
+  }
+
+  // Every process gets the outputs and statuses, to share the statistics out by column.
+  void share(LineOutputs& evaluated) {
+    const auto start = Clock::now();
+    pool_.broadcast_vector(evaluated.status, samples_, 0);
+    for (LargeVector<double>& column : evaluated.columns) pool_.broadcast_vector(column, samples_, 0);
+    outcome_.timings.sharing += seconds_since(start);
+  }
+
+  // The statistics, column by column, shared out by the schedule; the others send theirs to the
+  // coordinator, which gathers them when it finishes the line (while the next line is designed).
+  void statistics(std::size_t index, std::shared_ptr<LineDesign> design, std::shared_ptr<LineOutputs> evaluated) {
+    const auto start = Clock::now();
+    const LineResult layout = result_layout(campaign_, campaign_.lines()[index]);
+    std::vector<std::span<const double>> values(design->values.begin(), design->values.end());
+    values.insert(values.end(), evaluated->columns.begin(), evaluated->columns.end());
+    auto used = std::make_shared<const std::vector<std::uint32_t>>(analysis_samples(evaluated->status));
+    const std::size_t columns = layout.columns.size();
+    // An input ranked by its strata costs about a quarter of a sorted column (measured).
+    std::vector<double> costs(columns, 1.0);
+    for (std::size_t c = 0; c < design->ranks.size(); ++c) costs[c] = design->strictly_increasing[c] != 0 ? 0.25 : 1.0;
+    const std::vector<int> owner = schedule_.statistics_owners(index, costs);
+    auto statistics = std::make_shared<std::vector<ColumnStatistics>>(columns);
+    ColumnStatisticsBatch mine;
+    for (std::size_t c = 0; c < columns; ++c) {
+      if (owner[c] != pool_.rank()) continue;
+      // An input whose values strictly increase with its strata is ranked by them, unsorted.
+      const bool by_strata = c < design->ranks.size() && design->strictly_increasing[c] != 0;
+      ColumnStatistics column = column_statistics(
+          layout.columns[c], values[c], by_strata ? std::span<const std::uint32_t>(design->ranks[c]) : std::span<const std::uint32_t>{},
+          evaluated->status, *used, contains(campaign_.campaign().outputs, layout.columns[c].quantity));
+      if (pool_.is_coordinator()) {
+        (*statistics)[c] = std::move(column);
+      } else {
+        mine.columns.emplace_back(c, std::move(column));
+      }
+    }
+    if (pool_.is_coordinator()) {
+      finish_line_ = [this, index, design, evaluated, used, statistics] { finish(index, *design, *evaluated, *used, *statistics); };
+    } else {
+      pool_.gather(mine.encode());
+    }
+    outcome_.timings.statistics += seconds_since(start);
+  }
+
+  // The design this process makes while the others compute line `index`'s statistics, if any.
+  void design_ahead(std::size_t index) {
+    const std::optional<std::size_t> ahead = schedule_.designed_during_statistics(index);
+    if (!ahead || schedule_.designer_of(*ahead) != pool_.rank()) return;
+    const auto start = Clock::now();
+    make_design(*ahead);
+    outcome_.timings.design += seconds_since(start);
+  }
+
+  // Coordinator: the line whose statistics were computed last, handed to the observer (the
+  // others need nothing from it; a failure reaches them at the next design, or at end()).
+  void finish_previous() {
+    if (!finish_line_) return;
+    const auto start = Clock::now();
+    observer_failure_.run(pool_, finish_line_);
+    finish_line_ = nullptr;
+    outcome_.timings.observer += seconds_since(start);
+  }
+
+  RunOutcome end() {
+    observer_failure_.share(pool_);
+    if (kappa_) outcome_.kappa = kappa_->kappa();
+    return outcome_;
+  }
+
+ private:
+  void make_design(std::size_t line) { held_.emplace(line, campaign_.design(campaign_.lines()[line])); }
+
+  // Coordinator: kappa from the reference line (raised on every process when it cannot be
+  // calibrated), then v *= kappa on every line.
+  void scale_growth(const PreparedLine& line, LineOutputs& evaluated, const std::vector<double>& to_si) {
+    const std::vector<std::string>& computed = campaign_.computed_outputs();
+    const auto v = static_cast<std::size_t>(std::find(computed.begin(), computed.end(), KappaCalibration::quantity) - computed.begin());
+    if (v == computed.size()) return;
+    if (kappa_->is_reference(line.campaign_line.name)) {
+      on_coordinator(pool_, [&] { kappa_->calibrate(evaluated.columns[v], to_si[v], evaluated.status); });
+      outcome_.calibrated = true;
+    }
+    if (pool_.is_coordinator()) kappa_->apply(evaluated.columns[v], evaluated.status);
+  }
+
+  // Coordinator: gathers the other processes' columns, assembles the line's result and
+  // statistics and hands them to the observer.
+  void finish(std::size_t index, LineDesign& design, LineOutputs& evaluated, const std::vector<std::uint32_t>& used,
+              std::vector<ColumnStatistics>& statistics) {
+    for (const std::vector<double>& contribution : pool_.gather({})) {
+      for (auto& [c, column] : ColumnStatisticsBatch::decode(contribution).columns) statistics[c] = std::move(column);
+    }
+    LineResult result = assemble_result(campaign_, campaign_.lines()[index], design, evaluated);
+    LineStatistics finished;
+    std::vector<ColumnAnalysis> analyses;
+    for (ColumnStatistics& column : statistics) analyses.push_back(std::move(column.analysis));
+    finished.analysis = combine_column_analyses(result, used, analyses);
+    for (const std::string& output : campaign_.campaign().outputs) {
+      for (std::size_t c = 0; c < result.columns.size(); ++c) {
+        if (result.columns[c].quantity != output || !statistics[c].summary) continue;
+        QuantitySummary summary = *statistics[c].summary;
+        summary.line = result.name;
+        summary.quantity = result.columns[c].quantity;
+        summary.unit = std::string(result.columns[c].unit->symbol);
+        finished.summaries.push_back(std::move(summary));
+      }
+    }
+    observer_.line_analyzed(std::move(result), std::move(finished), design.warnings);
+  }
+
+  const PreparedCampaign& campaign_;
+  Pool& pool_;
+  RunObserver& observer_;
+  ChunkJournal* journal_;
+  LineSchedule schedule_;
+  std::size_t samples_;
+  std::optional<KappaCalibration> kappa_;       // when v is an output
+  std::map<std::size_t, LineDesign> held_;      // designs this process made of lines not yet shared
+  std::function<void()> finish_line_;           // coordinator: the line analyzed last, to hand over
+  CoordinatorFailure observer_failure_;         // raised everywhere at the next design
+  RunOutcome outcome_;
 };
-
-std::vector<double> serialize(const ColumnStatistics& statistics) {
-  const ColumnAnalysis& analysis = statistics.analysis;
-  const std::size_t ranks = analysis.twice_ranks.size();
-  std::vector<double> message = {static_cast<double>(analysis.verdict), static_cast<double>(analysis.moments.count),
-                                 analysis.moments.mean, analysis.moments.squared_deviations,
-                                 statistics.summary ? 1.0 : 0.0};
-  const QuantitySummary s = statistics.summary.value_or(QuantitySummary{});
-  message.insert(message.end(), {static_cast<double>(s.n), static_cast<double>(s.n_flagged), s.median, s.q1, s.q3, s.iqr,
-                                 s.p10, s.p90, s.mean, s.sd, s.median_ci_low, s.median_ci_high, static_cast<double>(ranks)});
-  message.resize(column_header_size + (ranks + 1) / 2);
-  if (ranks > 0) std::memcpy(message.data() + column_header_size, analysis.twice_ranks.data(), ranks * sizeof(std::uint32_t));
-  return message;
-}
-
-ColumnStatistics deserialize(std::span<const double> message) {
-  if (message.size() < column_header_size) throw std::logic_error("column statistics message too short");
-  ColumnStatistics statistics;
-  ColumnAnalysis& analysis = statistics.analysis;
-  analysis.verdict = static_cast<ColumnAnalysis::Verdict>(static_cast<int>(message[0]));
-  analysis.moments = {static_cast<std::size_t>(message[1]), message[2], message[3]};
-  if (message[4] != 0.0) {
-    QuantitySummary s;
-    s.n = static_cast<std::size_t>(message[5]);
-    s.n_flagged = static_cast<std::size_t>(message[6]);
-    s.median = message[7];
-    s.q1 = message[8];
-    s.q3 = message[9];
-    s.iqr = message[10];
-    s.p10 = message[11];
-    s.p90 = message[12];
-    s.mean = message[13];
-    s.sd = message[14];
-    s.median_ci_low = message[15];
-    s.median_ci_high = message[16];
-    statistics.summary = s;
-  }
-  const auto ranks = static_cast<std::size_t>(message[17]);
-  if (message.size() != column_header_size + (ranks + 1) / 2) throw std::logic_error("column statistics message of unexpected size");
-  analysis.twice_ranks.resize(ranks);
-  if (ranks > 0) std::memcpy(analysis.twice_ranks.data(), message.data() + column_header_size, ranks * sizeof(std::uint32_t));
-  return statistics;
-}
-
-// Column c's statistics: the analysis over the ok samples (analysis_samples), and, when the
-// campaign reports the quantity, its summary. One sort serves both when the summary counts the
-// same samples (no v = 0 of a no_growth sample among them, every ok value finite); otherwise
-// summarize_quantity selects its order statistics itself.
-ColumnStatistics column_statistics(const ResultColumn& column, std::span<const double> values,
-                                   std::span<const std::uint32_t> strata, std::span<const SampleStatus> status,
-                                   std::span<const std::uint32_t> used, const std::vector<std::string>& outputs) {
-  const bool summarize = wants_summary(outputs, column.quantity);
-  const bool no_growth =
-      column.quantity == "v" && std::find(status.begin(), status.end(), SampleStatus::no_growth) != status.end();
-  ColumnStatistics statistics;
-  const bool analyzed = used.size() >= 3;  // analyze_line's minimum
-  std::vector<std::size_t> positions;
-  if (summarize && !no_growth) positions = summary_positions(used.size());
-  if (analyzed) statistics.analysis = analyze_column(values, used, positions, strata);
-  if (!summarize) return statistics;
-  if (analyzed && !no_growth && statistics.analysis.verdict == ColumnAnalysis::Verdict::used) {
-    statistics.summary = summary_from_order("", column, values.size() - used.size(), statistics.analysis.moments,
-                                            statistics.analysis.order_statistics);
-  } else {
-    ResultColumn copy{column.quantity, column.unit, column.is_input, {values.begin(), values.end()}};
-    statistics.summary = summarize_quantity("", copy, status);
-  }
-  return statistics;
-}
 
 }  // namespace
 
@@ -470,189 +452,18 @@ LineStatistics line_statistics(const LineResult& result, const std::vector<std::
 }
 
 RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunObserver& observer, ChunkJournal* journal) {
-  RunOutcome outcome;
-  const std::size_t n = campaign.campaign().samples;
-  const std::size_t outputs = campaign.computed_outputs().size();
-  // The coordinator finishes each line (gathers its statistics, assembles it, hands it to the
-  // observer) when the next one starts, while that line's designer may still be designing it;
-  // the other processes need nothing from that. A failure of the observer (writing) reaches them
-  // when the next design is shared.
-  CoordinatorFailure observer_failure;
-  std::function<void()> finish_line;
-  const auto finish_previous_line = [&] {
-    if (!finish_line) return;
-    const auto start = Clock::now();
-    observer_failure.run(pool, finish_line);
-    finish_line = nullptr;
-    outcome.timings.observer += seconds_since(start);
-  };
-  // Designs are made whole by one process each, one line ahead: rank 0 makes line 0's while
-  // line 1's designer makes line 1's, then line i + 1's designer (process 1 + i % (K - 1), never
-  // rank 0) makes it while the others compute line i's statistics, which it takes no part in.
-  // A design is the same whoever makes it, so the results do not depend on K.
-  const std::size_t line_count = campaign.lines().size();
-  const int processes = pool.size();
-  const auto designer_of = [&](std::size_t line_index) {
-    return processes == 1 || line_index == 0 ? 0 : 1 + static_cast<int>((line_index - 1) % static_cast<std::size_t>(processes - 1));
-  };
-  std::map<std::size_t, LineDesign> held;  // designs this process made of lines not yet shared
-  const auto make_design = [&](std::size_t line_index) {
-    held.emplace(line_index, campaign.design(campaign.lines()[line_index]));
-  };
-  for (std::size_t index = 0; index < line_count; ++index) {
-    const PreparedLine& line = campaign.lines()[index];
-    // The observer sees each line finished before the next one starts.
-    finish_previous_line();
-    observer_failure.run(pool, [&] { observer.line_started(line, n); });
-    auto start = Clock::now();
-    if (index == 0 || processes == 1) {
-      if (pool.is_coordinator()) make_design(index);
-      if (index == 0 && processes > 1 && line_count > 1 && pool.rank() == designer_of(1)) make_design(1);
-    }
-    auto design = std::make_shared<LineDesign>();
-    const int designer = designer_of(index);
-    if (pool.rank() == designer) {
-      *design = std::move(held.at(index));
-      held.erase(index);
-    }
-    if (processes > 1) share_design(*design, line, n, designer, pool);
-    observer_failure.share(pool);
-    outcome.timings.design += seconds_since(start);
-
-    // The models, in chunks; the coordinator collects the outputs.
-    start = Clock::now();
-    const LineResult layout = result_layout(campaign, line);
-    auto evaluated = std::make_shared<LineOutputs>();
-    evaluated->columns.resize(outputs);
-    std::vector<double> to_si;
-    for (std::size_t o = 0; o < outputs; ++o) to_si.push_back(layout.columns[design->values.size() + o].unit->to_si);
-    if (pool.is_coordinator()) {
-      for (LargeVector<double>& column : evaluated->columns) column.resize(n);  // every chunk writes its range
-      evaluated->status.resize(n);
-    }
-    const ChunkWork work = [&](ChunkRange range) { return campaign.evaluate_chunk(line, *design, range); };
-    const ChunkSink sink = [&](ChunkRange range, std::span<const double> values) {
-      const std::size_t size = range.end - range.begin;
-      if (values.size() != (outputs + 1) * size) throw std::logic_error("chunk of unexpected size");
-      for (std::size_t o = 0; o < outputs; ++o) {
-        double* out = evaluated->columns[o].data() + range.begin;
-        for (std::size_t i = 0; i < size; ++i) out[i] = values[o * size + i] / to_si[o];
-      }
-      for (std::size_t i = 0; i < size; ++i) {
-        evaluated->status[range.begin + i] = static_cast<SampleStatus>(static_cast<int>(values[outputs * size + i]));
-      }
-      observer.chunk_done(range);
-    };
-    if (journal == nullptr) {
-      pool.run(n, campaign.campaign().chunk_size, work, sink);
-    } else {
-      on_coordinator(pool, [&] { journal->replay(index, sink); });  // a read error stops every process
-      const ChunkSink record_then_sink = [&](ChunkRange range, std::span<const double> values) {
-        journal->record(index, range, values);
-        sink(range, values);
-      };
-      pool.run(n, campaign.campaign().chunk_size, work, record_then_sink,
-               [&](ChunkRange range) { return journal->holds(index, range); });
-    }
-    const auto v = std::find(campaign.computed_outputs().begin(), campaign.computed_outputs().end(), "v");
-    const bool is_reference = campaign.calibrates_kappa() && line.campaign_line.name == campaign.campaign().reference_line;
-    if (is_reference) {
-      on_coordinator(pool, [&] {
-        const LargeVector<double>& v_values = evaluated->columns[static_cast<std::size_t>(v - campaign.computed_outputs().begin())];
-        const double v_to_si = to_si[static_cast<std::size_t>(v - campaign.computed_outputs().begin())];
-        std::vector<double> v_si(v_values.begin(), v_values.end());
-        for (double& value : v_si) value *= v_to_si;
-        outcome.kappa = calibrate_kappa(line.campaign_line.name, campaign.experimental_median_growth_rate(),
-                                        median_growth_rate(v_si, evaluated->status));
-      });
-      outcome.calibrated = true;
-    }
-    if (pool.is_coordinator() && campaign.calibrates_kappa() && v != campaign.computed_outputs().end()) {
-      apply_kappa(evaluated->columns[static_cast<std::size_t>(v - campaign.computed_outputs().begin())], evaluated->status,
-                  outcome.kappa);
-    }
-    outcome.timings.evaluation += seconds_since(start);
-
-    // Every process gets the outputs and statuses, to share the statistics out by column.
-    start = Clock::now();
-    pool.broadcast_vector(evaluated->status, n, 0);
-    for (LargeVector<double>& column : evaluated->columns) pool.broadcast_vector(column, n, 0);
-    std::vector<std::span<const double>> values(design->values.begin(), design->values.end());
-    values.insert(values.end(), evaluated->columns.begin(), evaluated->columns.end());
-    outcome.timings.sharing += seconds_since(start);
-
-    // The statistics, column by column, shared out in advance; then the coordinator assembles
-    // the line's result and puts the statistics together.
-    start = Clock::now();
-    auto used = std::make_shared<const std::vector<std::uint32_t>>(analysis_samples(evaluated->status));
-    const std::size_t columns = layout.columns.size();
-    // An input ranked by its strata costs about a quarter of a sorted column (measured); the
-    // coordinator shares its core with its writer thread (about half a column's work).
-    std::vector<double> costs(columns, 1.0);
-    for (std::size_t c = 0; c < design->ranks.size(); ++c) costs[c] = design->strictly_increasing[c] != 0 ? 0.25 : 1.0;
-    // The next line's designer, when it has still to make it, takes none: it designs meanwhile.
-    const std::size_t next = index + 1;
-    const int next_designer = processes > 1 && next >= 2 && next < line_count ? designer_of(next) : -1;
-    const std::vector<int> owner = share_out(costs, pool.size(), 0.5, next_designer);
-    auto statistics = std::make_shared<std::vector<ColumnStatistics>>(columns);
-    std::vector<double> mine;  // [column, size, message] for each column this process computes
-    for (std::size_t c = 0; c < columns; ++c) {
-      if (owner[c] != pool.rank()) continue;
-      // An input whose values strictly increase with its strata is ranked by them, unsorted.
-      const bool by_strata = c < design->ranks.size() && design->strictly_increasing[c] != 0;
-      (*statistics)[c] = column_statistics(layout.columns[c], values[c],
-                                           by_strata ? std::span<const std::uint32_t>(design->ranks[c])
-                                                     : std::span<const std::uint32_t>{},
-                                           evaluated->status, *used, campaign.campaign().outputs);
-      if (pool.is_coordinator()) continue;
-      const std::vector<double> message = serialize((*statistics)[c]);
-      mine.push_back(static_cast<double>(c));
-      mine.push_back(static_cast<double>(message.size()));
-      mine.insert(mine.end(), message.begin(), message.end());
-      (*statistics)[c] = {};
-    }
-    if (pool.is_coordinator()) {
-      // Finished during the next line's design (or after the last line).
-      finish_line = [&campaign, &pool, &observer, &line, design, evaluated, used, statistics] {
-        const std::vector<std::vector<double>> gathered = pool.gather({});
-        for (const std::vector<double>& contribution : gathered) {
-          for (std::size_t at = 0; at < contribution.size();) {
-            const auto c = static_cast<std::size_t>(contribution[at]);
-            const auto size = static_cast<std::size_t>(contribution[at + 1]);
-            (*statistics)[c] = deserialize(std::span<const double>(contribution).subspan(at + 2, size));
-            at += 2 + size;
-          }
-        }
-        LineResult result = assemble_result(campaign, line, *design, *evaluated);
-        LineStatistics finished;
-        std::vector<ColumnAnalysis> analyses;
-        for (ColumnStatistics& column : *statistics) analyses.push_back(std::move(column.analysis));
-        finished.analysis = combine_column_analyses(result, *used, analyses);
-        for (const std::string& output : campaign.campaign().outputs) {
-          for (std::size_t c = 0; c < result.columns.size(); ++c) {
-            if (result.columns[c].quantity != output || !(*statistics)[c].summary) continue;
-            QuantitySummary summary = *(*statistics)[c].summary;
-            summary.line = result.name;
-            summary.quantity = result.columns[c].quantity;
-            summary.unit = std::string(result.columns[c].unit->symbol);
-            finished.summaries.push_back(std::move(summary));
-          }
-        }
-        observer.line_analyzed(std::move(result), std::move(finished), design->warnings);
-      };
-    } else {
-      pool.gather(std::move(mine));
-    }
-    outcome.timings.statistics += seconds_since(start);
-    if (pool.rank() == next_designer) {
-      start = Clock::now();
-      make_design(next);
-      outcome.timings.design += seconds_since(start);
-    }
+  LineRun run(campaign, pool, observer, journal);
+  for (std::size_t line = 0; line < campaign.lines().size(); ++line) {
+    run.finish_previous();  // the observer sees each line finished before the next one starts
+    run.start(line);
+    const std::shared_ptr<LineDesign> design = run.design(line);
+    const std::shared_ptr<LineOutputs> outputs = run.evaluate(line, *design);
+    run.share(*outputs);
+    run.statistics(line, design, outputs);  // the coordinator finishes the line when the next one starts
+    run.design_ahead(line);                 // the next line's designer, meanwhile
   }
-  finish_previous_line();
-  observer_failure.share(pool);
-  return outcome;
+  run.finish_previous();
+  return run.end();
 }
 
 }  // namespace growthuq

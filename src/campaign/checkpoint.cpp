@@ -7,6 +7,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/io/output_file.hpp"
+#include "campaign/chunk_values.hpp"
 #include "io/read_text_file.hpp"
 
 namespace growthuq {
@@ -93,7 +94,7 @@ std::unique_ptr<RunCheckpoint> RunCheckpoint::resume(Pool& pool, const PreparedC
     const ChunkLogScan scan = scan_chunk_log(path);
     const std::size_t n = campaign.campaign().samples;
     const std::size_t chunk_size = campaign.campaign().chunk_size;
-    const std::size_t values_per_sample = campaign.computed_outputs().size() + 1;
+    const std::size_t values_per_sample = ChunkValues::values_per_sample(campaign.computed_outputs().size());
     for (const ChunkRecord& record : scan.records) {
       const std::size_t size = record.range.end - record.range.begin;
       const bool fits = record.line < checkpoint->held_.size() && record.range.begin % chunk_size == 0 &&

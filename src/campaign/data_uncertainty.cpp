@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "campaign/chunk_values.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/large_vector.hpp"
 #include "growthuq/core/units.hpp"
@@ -95,22 +96,20 @@ ReplicateLine evaluate_replicate_line(const PreparedCampaign& campaign, const Pr
   options.position = c.stratum_position;
   const LineDesign design = sample_line(line.design_variables, options, line.correlation ? &*line.correlation : nullptr);
   const std::vector<double> values = campaign.evaluate_chunk(line, design, ChunkRange{0, samples});
-  const std::size_t computed = campaign.computed_outputs().size();
+  const ChunkValues chunk(values, campaign.computed_outputs().size());
   ReplicateLine result;
-  for (std::size_t i = 0; i < samples; ++i) {
-    result.status.push_back(static_cast<SampleStatus>(static_cast<int>(values[computed * samples + i])));
-  }
+  for (std::size_t i = 0; i < samples; ++i) result.status.push_back(chunk.status(i));
   for (const ReplicateOutput& output : replicate_outputs(campaign, line)) {
     const Unit& unit = output_unit(line, output);
     if (output.input) {
-      result.outputs.push_back(ResultColumn{output.quantity, &unit, true, design.values[*output.input]});
+      result.outputs.push_back(ResultColumn{output.quantity, &unit, true, design.values[*output.input], {}});
       continue;
     }
-    const std::size_t o = *output.computed;
-    LargeVector<double> column(values.begin() + static_cast<std::ptrdiff_t>(o * samples),
-                               values.begin() + static_cast<std::ptrdiff_t>((o + 1) * samples));
+    const std::span<const double> si = chunk.output(*output.computed);
+    LargeVector<double> column(si.begin(), si.end());
     for (double& value : column) value /= unit.to_si;
-    result.outputs.push_back(ResultColumn{output.quantity, &unit, false, std::move(column)});
+    result.outputs.push_back(
+        ResultColumn{output.quantity, &unit, false, std::move(column), campaign.valued_statuses(line, output.quantity)});
   }
   return result;
 }
@@ -122,26 +121,12 @@ ResultColumn* column_of(ReplicateLine& line, std::string_view quantity) {
   return nullptr;
 }
 
-// v *= kappa on growing samples, as the campaign applies its kappa (campaign_run.cpp).
-void scale_growth(ReplicateLine& line, double kappa) {
-  ResultColumn* v = column_of(line, "v");
-  if (v == nullptr) return;
-  for (std::size_t i = 0; i < v->values.size(); ++i) {
-    if (line.status[i] != SampleStatus::ok) continue;
-    v->values[i] *= kappa;
-    if (!std::isnormal(v->values[i])) {
-      v->values[i] = std::numeric_limits<double>::quiet_NaN();
-      line.status[i] = SampleStatus::out_of_range;
-    }
-  }
-}
-
 // One replicate: the medians of every line's outputs (NaN where no sample counts), lines in
 // run order, so the reference line calibrates kappa before the others use it.
 std::vector<std::vector<QuantitySummary>> replicate_summaries(const PreparedCampaign& campaign, std::uint64_t key,
                                                               std::size_t samples) {
   const Campaign& c = campaign.campaign();
-  double kappa = 1.0;
+  std::optional<KappaCalibration> kappa;  // the replicate's own, on its refitted reference line
   std::vector<std::vector<QuantitySummary>> summaries;
   for (const PreparedLine& original : campaign.lines()) {
     PreparedLine line = original;
@@ -152,16 +137,14 @@ std::vector<std::vector<QuantitySummary>> replicate_summaries(const PreparedCamp
     }
     ReplicateLine result = evaluate_replicate_line(campaign, line, key, samples);
     if (campaign.calibrates_kappa()) {
+      ResultColumn* v = column_of(result, KappaCalibration::quantity);
       if (original.campaign_line.name == c.reference_line) {
         const LineDistributions& laws = refit ? *refit : original.distributions;
         const LineVariable* v_exp = laws.find("v_exp");
-        ResultColumn* v = column_of(result, "v");
-        std::vector<double> v_si(v->values.begin(), v->values.end());
-        for (double& value : v_si) value *= v->unit->to_si;
-        kappa = calibrate_kappa(c.reference_line, quantile(v_exp->distribution, 0.5) * v_exp->unit->to_si,
-                                median_growth_rate(v_si, result.status));
+        kappa.emplace(c.reference_line, quantile(v_exp->distribution, 0.5) * v_exp->unit->to_si);
+        kappa->calibrate(v->values, v->unit->to_si, result.status);
       }
-      scale_growth(result, kappa);
+      if (v != nullptr && kappa) kappa->apply(v->values, result.status);
     }
     std::vector<QuantitySummary> line_summaries;
     for (const ResultColumn& column : result.outputs) {

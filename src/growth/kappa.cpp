@@ -54,4 +54,22 @@ double calibrate_kappa(std::string_view reference_line, double experimental_medi
   return kappa;
 }
 
+void apply_kappa(std::span<double> v, std::span<SampleStatus> status, double kappa) {
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (status[i] != SampleStatus::ok) continue;
+    v[i] *= kappa;
+    if (!std::isnormal(v[i])) {
+      v[i] = std::numeric_limits<double>::quiet_NaN();
+      status[i] = SampleStatus::out_of_range;
+    }
+  }
+}
+
+void KappaCalibration::calibrate(std::span<const double> v, double v_to_si, std::span<const SampleStatus> status) {
+  std::vector<double> v_si(v.begin(), v.end());
+  for (double& value : v_si) value *= v_to_si;
+  kappa_ = calibrate_kappa(reference_line_, experimental_median_, median_growth_rate(v_si, status));
+  calibrated_ = true;
+}
+
 }  // namespace growthuq

@@ -52,8 +52,8 @@ MedianConfidenceRanks median_confidence_ranks(std::size_t n, double level) {
   return ranks;
 }
 
-bool counts_in_summary(std::string_view quantity, SampleStatus status) {
-  return status == SampleStatus::ok || (quantity == "v" && status == SampleStatus::no_growth);
+bool counts_in_summary(const ResultColumn& column, SampleStatus status) {
+  return has_value(status, column.valued_statuses);
 }
 
 std::vector<std::size_t> summary_positions(std::size_t n) {
@@ -143,7 +143,7 @@ QuantitySummary summarize_quantity(const std::string& line, const ResultColumn& 
   values.reserve(column.values.size());
   for (std::size_t i = 0; i < column.values.size(); ++i) {
     const double value = column.values[i];
-    if (counts_in_summary(column.quantity, status[i]) && std::isfinite(value)) values.push_back(value);
+    if (counts_in_summary(column, status[i]) && std::isfinite(value)) values.push_back(value);
   }
   const SampleMoments moments = sample_moments(values);
   // Only a few order statistics are needed: select them (std::nth_element, linear time) in

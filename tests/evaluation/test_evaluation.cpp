@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iterator>
 #include <set>
+#include <stdexcept>
 #include <string>
 
 #include "growthuq/core/error.hpp"
@@ -111,4 +112,98 @@ TEST_CASE("every status code has its own name and sentence and a row in README's
   CHECK(sentences.size() == static_cast<std::size_t>(last + 1));
   CHECK(to_string(static_cast<SampleStatus>(last + 1)) == "unknown");
   CHECK(to_string(SampleStatus::unstable_branch) == "unstable_branch");
+}
+
+namespace {
+
+// Declares x -> y but, as `fault` says, breaks the declaration in one way.
+enum class Fault { none, writes_undeclared, leaves_declared_unwritten, changes_its_read, leaves_nan_for_ok, clears_a_flag };
+
+class FaultyEvaluator final : public Evaluator {
+ public:
+  explicit FaultyEvaluator(Fault fault) : fault_(fault) {}
+  std::string_view name() const override { return "faulty"; }
+  std::vector<std::string> reads() const override { return {"x"}; }
+  std::vector<std::string> writes() const override { return {"y"}; }
+  void evaluate(SampleBlock& block) const override {
+    if (fault_ == Fault::clears_a_flag) block.status()[0] = SampleStatus::ok;
+    if (fault_ == Fault::writes_undeclared) block.add_column("z");
+    if (fault_ == Fault::changes_its_read) block.column("x")[1] = 0.5;
+    if (fault_ == Fault::leaves_declared_unwritten) return;
+    const auto y = block.add_column("y");
+    for (std::size_t i = 0; i < block.size(); ++i) {
+      if (block.status()[i] != SampleStatus::ok) continue;
+      if (fault_ == Fault::leaves_nan_for_ok && i == 2) continue;
+      y[i] = 2 * block.column("x")[i];
+    }
+  }
+
+ private:
+  Fault fault_;
+};
+
+SampleBlock block_with_x() {
+  SampleBlock block(3);
+  const double x[] = {1.0, 2.0, 3.0};
+  block.set_column("x", x);
+  block.flag(0, SampleStatus::invalid_input);  // entered flagged: y stays NaN there
+  return block;
+}
+
+}  // namespace
+
+TEST_CASE("evaluate_checked passes an evaluator that keeps its declaration") {
+  SampleBlock block = block_with_x();
+  const FaultyEvaluator honest(Fault::none);
+  evaluate_checked(honest, block);
+  CHECK(std::isnan(block.column("y")[0]));  // flagged on entry: left NaN, and that is allowed
+  CHECK(block.column("y")[1] == 4.0);
+  CHECK(block.column("y")[2] == 6.0);
+  CHECK(block.status()[0] == SampleStatus::invalid_input);
+}
+
+TEST_CASE("evaluate_checked stops an evaluator that breaks its declaration, naming it") {
+  const auto message_of = [](Fault fault) {
+    SampleBlock block = block_with_x();
+    const FaultyEvaluator faulty(fault);
+    try {
+      evaluate_checked(faulty, block);
+    } catch (const std::logic_error& error) {
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  CHECK(message_of(Fault::writes_undeclared) ==
+        "evaluator 'faulty' broke its declaration: it added the column 'z', which writes() does not name");
+  CHECK(message_of(Fault::leaves_declared_unwritten) ==
+        "evaluator 'faulty' broke its declaration: it did not write the declared column 'y'");
+  CHECK(message_of(Fault::changes_its_read) ==
+        "evaluator 'faulty' broke its declaration: it changed the column 'x', which writes() does not name");
+  CHECK(message_of(Fault::leaves_nan_for_ok) ==
+        "evaluator 'faulty' broke its declaration: the declared column 'y' holds nan for sample 2, whose status is ok");
+  CHECK(message_of(Fault::clears_a_flag) ==
+        "evaluator 'faulty' broke its declaration: it changed the status of sample 0 from invalid_input to ok");
+}
+
+TEST_CASE("run_plan checks every evaluator of the plan") {
+  SampleBlock block = block_with_x();
+  const FaultyEvaluator faulty(Fault::writes_undeclared);
+  const std::vector<const Evaluator*> plan{&faulty};
+  CHECK_THROWS_AS(run_plan(plan, block), std::logic_error);
+}
+
+TEST_CASE("a status set holds exactly the statuses given; has_value is ok or one of them") {
+  const StatusSet none;
+  const StatusSet growth{SampleStatus::no_growth};
+  const StatusSet two{SampleStatus::ok, SampleStatus::unstable_branch};
+  CHECK(none.empty());
+  CHECK_FALSE(growth.empty());
+  for (int code = 0; code <= static_cast<int>(last_sample_status); ++code) {
+    const auto status = static_cast<SampleStatus>(code);
+    CHECK_FALSE(none.contains(status));
+    CHECK(growth.contains(status) == (status == SampleStatus::no_growth));
+    CHECK(two.contains(status) == (status == SampleStatus::ok || status == SampleStatus::unstable_branch));
+    CHECK(has_value(status, none) == (status == SampleStatus::ok));
+    CHECK(has_value(status, growth) == (status == SampleStatus::ok || status == SampleStatus::no_growth));
+  }
 }

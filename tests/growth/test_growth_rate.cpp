@@ -193,3 +193,52 @@ TEST_CASE("kappa calibration rejects medians that are not positive and finite") 
   CHECK_THROWS_AS(calibrate_kappa("pme48", 1e-7, inf), InputError);
   CHECK_THROWS_AS(calibrate_kappa("pme48", 1e300, 1e-300), InputError);
 }
+
+TEST_CASE("apply_kappa scales growing samples only and flags a product beyond double range") {
+  std::vector<double> v{2e-8, 0.0, not_a_number, 1e-300, 3e-8};
+  std::vector<SampleStatus> status{SampleStatus::ok, SampleStatus::no_growth, SampleStatus::burst, SampleStatus::ok,
+                                   SampleStatus::ok};
+  apply_kappa(v, status, 1e-20);
+  CHECK(v[0] == 2e-8 * 1e-20);  // one rounding, as evaluating with kappa would give
+  CHECK(v[1] == 0.0);           // a tube that does not grow stays at 0 whatever kappa is
+  CHECK(std::isnan(v[2]));
+  CHECK(std::isnan(v[3]));      // 1e-320 is subnormal: out of the normal range
+  CHECK(status[3] == SampleStatus::out_of_range);
+  CHECK(v[4] == 3e-8 * 1e-20);
+  CHECK(status[0] == SampleStatus::ok);
+  CHECK(status[1] == SampleStatus::no_growth);
+  CHECK(status[2] == SampleStatus::burst);
+}
+
+TEST_CASE("a kappa calibration takes rates in a display unit, calibrates on them, and scales every line") {
+  // Rates in um/s (to_si = 1e-6), as the campaign holds them; median of the growing {2, 3, 5}
+  // is 3 um/s, the experimental median 0.06 um/s, so kappa = 0.02 (up to the unit's rounding).
+  KappaCalibration calibration("wild_type", 0.06e-6);
+  CHECK(calibration.is_reference("wild_type"));
+  CHECK_FALSE(calibration.is_reference("pme48"));
+  CHECK(calibration.kappa() == 1.0);
+  CHECK_FALSE(calibration.calibrated());
+  std::vector<double> v{5.0, 0.0, 2.0, 3.0};
+  std::vector<SampleStatus> status{SampleStatus::ok, SampleStatus::no_growth, SampleStatus::ok, SampleStatus::ok};
+  calibration.calibrate(v, 1e-6, status);
+  CHECK(calibration.calibrated());
+  CHECK(calibration.kappa() == calibrate_kappa("wild_type", 0.06e-6, 3.0 * 1e-6));
+  CHECK(close(calibration.kappa(), 0.02, 4 * eps));  // three roundings: 0.06e-6, 3 * 1e-6, the ratio
+  calibration.apply(v, status);
+  CHECK(v[3] == 3.0 * calibration.kappa());
+  CHECK(v[1] == 0.0);
+  // No growing sample on the reference line: the calibration's InputError names it.
+  KappaCalibration none("pme48", 0.06e-6);
+  const std::vector<SampleStatus> flagged(v.size(), SampleStatus::no_growth);
+  CHECK_THROWS_WITH_AS(none.calibrate(v, 1e-6, flagged),
+                       "reference line 'pme48': predicted median growth rate (kappa = 1) = 'nan': "
+                       "expected a positive finite growth rate (nan: no sample of the line grows)",
+                       InputError);
+}
+
+TEST_CASE("the growth evaluator declares v valued under no_growth, and nothing else") {
+  const GrowthEvaluator growth({.p0 = 1e5, .kappa = 1.0});
+  CHECK(growth.valued_statuses("v") == StatusSet{SampleStatus::no_growth});
+  CHECK(growth.valued_statuses("p").empty());
+  CHECK(KappaCalibration::quantity == growth.writes().front());
+}

@@ -48,6 +48,7 @@ LineResult wild_type() {
                   column_of("d0", "um", true, {5.35, 5.9, 4.8, 6.2, 5.0, 5.1}),
                   column_of("p", "MPa", false, {0.31, missing, 0.22, 0.45, 0.18, 0.27}),
                   column_of("v", "um/s", false, {0.028, missing, 0.0, 0.041, 0.012, 0.02})};
+  line.columns.back().valued_statuses = {SampleStatus::no_growth};  // as the growth evaluator declares v
   line.status = {SampleStatus::ok, SampleStatus::burst, SampleStatus::no_growth,
                  SampleStatus::ok, SampleStatus::ok,    SampleStatus::ok};
   line.correlated_inputs = {"k", "d0"};

@@ -62,18 +62,23 @@ TEST_CASE("summary of the ok samples equals numpy; flagged samples are counted, 
   CHECK(s.median_ci_high == 4.1);
 }
 
-TEST_CASE("growth rate counts no_growth samples as v = 0; other quantities do not") {
+TEST_CASE("a column valued under no_growth (v) counts those samples as v = 0; other quantities do not") {
   const std::vector<double> values{0.02, 0.0, 0.03, 0.0, missing, 0.05};
   const std::vector<SampleStatus> status{SampleStatus::ok,        SampleStatus::no_growth, SampleStatus::ok,
                                          SampleStatus::no_growth, SampleStatus::burst,     SampleStatus::ok};
-  const QuantitySummary v = summarize_quantity("xeg113", column_of("v", "um/s", values), status);
+  // The growth evaluator declares v valued under no_growth (Evaluator::valued_statuses).
+  ResultColumn v_column = column_of("v", "um/s", values);
+  v_column.valued_statuses = {SampleStatus::no_growth};
+  const QuantitySummary v = summarize_quantity("xeg113", v_column, status);
   CHECK(v.n == 5);
   CHECK(v.n_flagged == 1);
   CHECK(v.median == 0.02);  // sorted 0, 0, 0.02, 0.03, 0.05
   CHECK(v.mean == doctest::Approx(0.02).epsilon(1e-15));
-  CHECK(counts_in_summary("v", SampleStatus::no_growth));
-  CHECK_FALSE(counts_in_summary("p", SampleStatus::no_growth));
-  const QuantitySummary p = summarize_quantity("xeg113", column_of("p", "MPa", {0.2, 0.1, 0.3, 0.05, missing, 0.4}), status);
+  const ResultColumn p_column = column_of("p", "MPa", {0.2, 0.1, 0.3, 0.05, missing, 0.4});
+  CHECK(counts_in_summary(v_column, SampleStatus::no_growth));
+  CHECK_FALSE(counts_in_summary(v_column, SampleStatus::burst));
+  CHECK_FALSE(counts_in_summary(p_column, SampleStatus::no_growth));
+  const QuantitySummary p = summarize_quantity("xeg113", p_column, status);
   CHECK(p.n == 3);
   CHECK(p.n_flagged == 3);
   CHECK(p.median == 0.3);  // sorted 0.2, 0.3, 0.4

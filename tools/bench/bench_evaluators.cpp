@@ -2,7 +2,9 @@
 // modulus, viscosity from relaxation distributions, and growth rate, on one SampleBlock of
 // physiological random tubes (default 1e7), single thread. Prints samples per second per
 // evaluator and for the chain; tools/bench/bench-evaluators builds and runs it. --block-size B
-// instead runs the chain block by block (B samples each), as a Monte Carlo driver would.
+// instead runs the chain block by block (B samples each), as a Monte Carlo driver would;
+// --checked yes runs each evaluator through evaluate_checked, as a campaign does (the cost of
+// checking the declarations).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -31,6 +33,7 @@ struct Options {
   std::uint64_t repeats = 3;
   std::uint64_t seed = 2022;
   std::uint64_t block_size = 0;  // 0: all samples in one SampleBlock
+  bool checked = false;          // through evaluate_checked
 };
 
 Options parse(int argc, char** argv) {
@@ -47,8 +50,12 @@ Options parse(int argc, char** argv) {
       options.seed = parse_count(value, "bench_evaluators", "--seed");
     } else if (flag == "--block-size") {
       options.block_size = parse_count(value, "bench_evaluators", "--block-size");
+    } else if (flag == "--checked") {
+      if (value != "yes" && value != "no") throw_bad_value("bench_evaluators", flag, value, "yes or no");
+      options.checked = value == "yes";
     } else {
-      throw InputError("bench_evaluators", "unknown option " + flag + " (--samples, --repeats, --seed, --block-size)");
+      throw InputError("bench_evaluators",
+                       "unknown option " + flag + " (--samples, --repeats, --seed, --block-size, --checked)");
     }
   }
   return options;
@@ -133,7 +140,11 @@ int main(int argc, char** argv) try {
     for (SampleBlock& block : blocks) {
       for (std::size_t s = 0; s < stages; ++s) {
         const double start = thread_cpu_seconds();
-        chain[s]->evaluate(block);
+        if (options.checked) {
+          evaluate_checked(*chain[s], block);
+        } else {
+          chain[s]->evaluate(block);
+        }
         seconds[r][s] += thread_cpu_seconds() - start;
       }
     }

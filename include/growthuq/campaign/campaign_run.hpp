@@ -1,10 +1,11 @@
-// The run of a campaign over its plant lines, all processes sharing every step: a line's design
-// is computed column by column (each process some columns, then every process gets them all),
-// its samples are evaluated through the Pool in chunks, and its statistics (summaries, rank
-// correlations, principal components) column by column again; the coordinating process
-// assembles one line at a time (LineResult, LineStatistics) and hands it to an observer, which
-// writes it. kappa is calibrated on the reference line and applied to every line (Eq. (G5),
-// src/growth/README.md).
+// The run of a campaign over its plant lines, all processes taking part. Per line: its design
+// is made whole by one process, one line ahead of the run (which one: line_schedule.hpp) and
+// shared to every process; its samples are evaluated through the Pool in chunks (or replayed
+// from a checkpoint), v scaled by kappa, which the reference line calibrates (kappa.hpp, Eq.
+// (G5) of src/growth/README.md); the evaluated outputs go to every process, which compute the
+// statistics (summaries, ranks, correlation matrices, principal components) column by column;
+// the coordinating process gathers them, assembles the line (LineResult, LineStatistics) and
+// hands it to an observer, which writes it, while the next line is being designed.
 #pragma once
 
 #include <cstddef>
@@ -24,9 +25,7 @@
 #include "growthuq/correlation/matrix_file.hpp"
 #include "growthuq/distributions/line_file.hpp"
 #include "growthuq/evaluation/evaluator.hpp"
-#include "growthuq/growth/growth_rate.hpp"
-#include "growthuq/growth/viscosity.hpp"
-#include "growthuq/mechanics/thin_shell_evaluators.hpp"
+#include "growthuq/growth/kappa.hpp"
 #include "growthuq/pool/pool.hpp"
 #include "growthuq/rawdata/raw_line_fit.hpp"
 #include "growthuq/sampling/line_design.hpp"
@@ -46,11 +45,12 @@ struct PreparedLine {
   // The target over design variables (a matrix file or the `physics` matrix restricted to the
   // variables sampled); empty when the line is uncorrelated or fewer than two variables remain.
   std::optional<RankCorrelationFile> correlation;
-  std::vector<const Evaluator*> plan;  // points into the owning PreparedCampaign
+  std::vector<const Evaluator*> plan;  // points into the owning PreparedCampaign's models
 };
 
-// A campaign validated end to end before any sampling (issue 4, step 1): every line file and
-// correlation file read, the models planned per line, the reference line checked for v_exp.
+// A campaign validated end to end before any sampling: every line file and correlation file
+// read, each line's models planned from the campaign's list (campaign_models.hpp: only those
+// its outputs need), the reference line checked for v_exp.
 // The same on every process (pure function of the files), so all processes agree on it.
 class PreparedCampaign {
  public:
@@ -74,6 +74,8 @@ class PreparedCampaign {
   bool calibrates_kappa() const noexcept { return calibrates_kappa_; }
   // Median of the reference line's v_exp distribution [m/s]; NaN when !calibrates_kappa().
   double experimental_median_growth_rate() const noexcept { return experimental_median_; }
+  // A run's calibration on the reference line (valid when calibrates_kappa()).
+  KappaCalibration kappa_calibration() const { return {campaign_.reference_line, experimental_median_}; }
 
   // Samples per line from now on (growthuq tradeoff runs one preparation at several counts:
   // line distributions, raw-data fits and correlation targets do not depend on it).
@@ -84,17 +86,20 @@ class PreparedCampaign {
 
 
   // The chunk's computed outputs (SI), output after output, then each sample's status as a
-  // double: (computed_outputs().size() + 1) * (range.end - range.begin) values.
+  // double: (computed_outputs().size() + 1) * (range.end - range.begin) values, read back with
+  // ChunkValues (src/campaign/chunk_values.hpp). Each model's declaration is checked as it runs
+  // (evaluate_checked).
   std::vector<double> evaluate_chunk(const PreparedLine& line, const LineDesign& design, ChunkRange range) const;
+
+  // The statuses under which the computed `output` of `line` holds a result (the declaration
+  // of the model that writes it, Evaluator::valued_statuses); none for an input.
+  StatusSet valued_statuses(const PreparedLine& line, std::string_view output) const;
 
  private:
   PreparedCampaign(Campaign campaign, Pool* pool, ProgressMode progress, std::ostream* log);
 
   Campaign campaign_;
-  ThinShellTurgor turgor_;
-  ThinShellModulus modulus_;
-  ViscosityEvaluator viscosity_;
-  GrowthEvaluator growth_;
+  std::vector<std::unique_ptr<const Evaluator>> models_;  // what the lines' plans choose from
   std::vector<PreparedLine> lines_;
   std::vector<std::string> computed_outputs_;
   bool calibrates_kappa_ = false;
@@ -136,7 +141,7 @@ class RunObserver {
 // Wall time this process spent in each part of a run, in seconds (growthuq run prints them when
 // the environment variable GROWTHUQ_TIMINGS is set).
 struct RunTimings {
-  double design = 0;      // building the designs (its share of the columns, then receiving the rest)
+  double design = 0;      // building the designs this process makes, and receiving the others
   double evaluation = 0;  // the models, in chunks through the pool
   double sharing = 0;     // sending the evaluated outputs to every process
   double statistics = 0;  // summaries, ranks and correlation matrices

@@ -23,6 +23,13 @@ class Evaluator {
   virtual std::vector<std::string> reads() const = 0;
   virtual std::vector<std::string> writes() const = 0;
 
+  // The statuses other than ok under which the column `written` (one of writes()) still holds
+  // a result rather than NaN (sample_status.hpp, has_value); none unless an evaluator says so.
+  virtual StatusSet valued_statuses(std::string_view written) const {
+    (void)written;
+    return {};
+  }
+
   // Adds every column of writes() to `block`. Samples whose status is not ok on entry are
   // skipped (their outputs stay NaN).
   virtual void evaluate(SampleBlock& block) const = 0;
@@ -36,7 +43,20 @@ std::vector<const Evaluator*> plan_evaluation(std::span<const Evaluator* const> 
                                               std::span<const std::string> inputs,
                                               std::span<const std::string> outputs);
 
-// Runs `plan` in order on `block`.
+// Runs `evaluator` on `block` and checks that it kept its declaration, as pagmo's problem
+// wrapper checks every fitness call, so each model stays a plain function of its columns:
+//   - every column of writes() is in the block, and each sample's value there is finite or the
+//     sample carries a non-ok status (a written column left NaN for an ok sample was not
+//     written);
+//   - no column outside writes() was added, and every column it found that writes() does not
+//     name (its reads among them) holds the same bits as before (compared through a
+//     position-keyed checksum of each column, so the check reads the block without copying it);
+//   - a sample that entered with a non-ok status leaves with that status (the first flag stays).
+// std::logic_error naming the evaluator, the column and the sample otherwise: a model that
+// breaks its declaration is a bug, stopped at the first batch it breaks.
+void evaluate_checked(const Evaluator& evaluator, SampleBlock& block);
+
+// Runs `plan` in order on `block`, each evaluator checked as evaluate_checked checks it.
 void run_plan(std::span<const Evaluator* const> plan, SampleBlock& block);
 
 }  // namespace growthuq

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <initializer_list>
 #include <string_view>
 
 namespace growthuq {
@@ -23,6 +24,31 @@ enum class SampleStatus : std::uint8_t {
 
 // The largest code: names and counts run over 0 .. last_sample_status (HDF5 "names" attribute).
 inline constexpr SampleStatus last_sample_status = SampleStatus::unstable_branch;
+
+// A set of statuses, one bit each.
+class StatusSet {
+ public:
+  constexpr StatusSet() = default;
+  constexpr StatusSet(std::initializer_list<SampleStatus> statuses) {
+    for (const SampleStatus status : statuses) bits_ |= bit(status);
+  }
+  constexpr bool contains(SampleStatus status) const noexcept { return (bits_ & bit(status)) != 0; }
+  constexpr bool empty() const noexcept { return bits_ == 0; }
+  constexpr bool operator==(const StatusSet&) const = default;
+
+ private:
+  static constexpr std::uint32_t bit(SampleStatus status) noexcept { return std::uint32_t{1} << static_cast<unsigned>(status); }
+  std::uint32_t bits_ = 0;
+};
+
+// Whether a sample's value in a column is a result: its status is ok, or one of the statuses
+// `valued` under which the column's evaluator declares its value a result
+// (Evaluator::valued_statuses). Most flags leave NaN; no_growth is the one that is itself a
+// prediction: a tube at or below the yield pressure grows at v = 0, and the growth evaluator
+// declares v valued under it (its other columns, p, E, ... still count only when ok).
+constexpr bool has_value(SampleStatus status, StatusSet valued) noexcept {
+  return status == SampleStatus::ok || valued.contains(status);
+}
 
 // Short name used in CSV/HDF5 ("ok", "lambda_not_above_one", ...).
 std::string_view to_string(SampleStatus status);

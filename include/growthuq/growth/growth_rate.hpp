@@ -41,6 +41,10 @@ class GrowthEvaluator final : public Evaluator {
   std::string_view name() const override { return "growth"; }
   std::vector<std::string> reads() const override { return {"p", "d", "eta", "h"}; }
   std::vector<std::string> writes() const override { return {"v"}; }
+  // v = 0 under no_growth is a prediction (a tube that does not grow), not a missing value.
+  StatusSet valued_statuses(std::string_view written) const override {
+    return written == "v" ? StatusSet{SampleStatus::no_growth} : StatusSet{};
+  }
   void evaluate(SampleBlock& block) const override;
 
  private:

@@ -30,9 +30,9 @@ struct MedianConfidenceRanks {
 // level in (0, 1); std::invalid_argument otherwise (a programming error, not user input).
 MedianConfidenceRanks median_confidence_ranks(std::size_t n, double level = 0.95);
 
-// Whether a sample with `status` enters the statistics of `quantity`: status ok, and for the
-// growth rate v also no_growth (a tube below the yield pressure is a valid prediction of 0).
-bool counts_in_summary(std::string_view quantity, SampleStatus status);
+// Whether a sample with `status` enters the statistics of `column`: when its value there is a
+// result, has_value(status, column.valued_statuses) (sample_status.hpp).
+bool counts_in_summary(const ResultColumn& column, SampleStatus status);
 
 // The summary of one column over the samples that count (above). Quantiles use numpy's
 // "linear" rule (sorted_quantile); sd divides by n - 1. A counted sample whose value is not
