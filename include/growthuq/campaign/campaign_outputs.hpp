@@ -11,7 +11,7 @@
 
 #include "growthuq/campaign/campaign_run.hpp"
 #include "growthuq/campaign/checkpoint_manifest.hpp"
-#include "growthuq/campaign/line_result.hpp"
+#include "growthuq/evaluation/line_result.hpp"
 #include "growthuq/campaign/progress.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "growthuq/pool/pool.hpp"

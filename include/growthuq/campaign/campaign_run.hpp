@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "growthuq/campaign/campaign_file.hpp"
-#include "growthuq/campaign/line_result.hpp"
+#include "growthuq/evaluation/line_result.hpp"
 #include "growthuq/campaign/progress.hpp"
 #include "growthuq/correlation/matrix_file.hpp"
 #include "growthuq/distributions/line_file.hpp"
