@@ -9,8 +9,8 @@
 #include <memory>
 #include <stdexcept>
 
-#include "growthuq/campaign/line_source.hpp"
-#include "growthuq/campaign/shared_raw_fits.hpp"
+#include "campaign/line_source.hpp"
+#include "campaign/shared_raw_fits.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/units.hpp"
 #include "growthuq/growth/kappa.hpp"

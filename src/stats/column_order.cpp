@@ -1,4 +1,4 @@
-#include "growthuq/stats/column_order.hpp"
+#include "stats/column_order.hpp"
 
 #include <algorithm>
 #include <cmath>
