@@ -8,7 +8,7 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
-#include "growthuq/io/ini.hpp"
+#include "io/ini.hpp"
 #include "io/read_text_file.hpp"
 
 namespace growthuq {

@@ -1,4 +1,4 @@
-#include "growthuq/campaign/campaign_outputs.hpp"
+#include "campaign/campaign_outputs.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -14,11 +14,11 @@
 #include <unistd.h>
 #endif
 
-#include "growthuq/campaign/campaign_report.hpp"
-#include "growthuq/campaign/checkpoint.hpp"
-#include "growthuq/campaign/csv_results.hpp"
+#include "campaign/campaign_report.hpp"
+#include "campaign/checkpoint.hpp"
+#include "campaign/csv_results.hpp"
 #include "growthuq/campaign/data_uncertainty.hpp"
-#include "growthuq/campaign/raw_data_outputs.hpp"
+#include "campaign/raw_data_outputs.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/io/results_h5.hpp"

@@ -1,4 +1,4 @@
-#include "growthuq/campaign/campaign_report.hpp"
+#include "campaign/campaign_report.hpp"
 
 #include <algorithm>
 #include <cmath>

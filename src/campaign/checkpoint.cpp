@@ -1,4 +1,4 @@
-#include "growthuq/campaign/checkpoint.hpp"
+#include "campaign/checkpoint.hpp"
 
 #include <algorithm>
 #include <array>

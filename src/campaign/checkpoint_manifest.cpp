@@ -1,4 +1,4 @@
-#include "growthuq/campaign/checkpoint_manifest.hpp"
+#include "campaign/checkpoint_manifest.hpp"
 
 #include <algorithm>
 #include <cinttypes>
@@ -7,7 +7,7 @@
 #include <cstring>
 #include <filesystem>
 
-#include "growthuq/campaign/chunk_log.hpp"
+#include "campaign/chunk_log.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/rawdata/raw_line_file.hpp"

@@ -1,4 +1,4 @@
-#include "growthuq/campaign/chunk_log.hpp"
+#include "campaign/chunk_log.hpp"
 
 #include <array>
 #include <bit>

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "growthuq/campaign/line_result.hpp"
+#include "growthuq/evaluation/line_result.hpp"
 #include "growthuq/stats/line_analysis.hpp"
 #include "growthuq/stats/quantity_summary.hpp"
 

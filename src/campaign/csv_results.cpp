@@ -1,4 +1,4 @@
-#include "growthuq/campaign/csv_results.hpp"
+#include "campaign/csv_results.hpp"
 
 #include <cmath>
 #include <utility>

@@ -1,4 +1,5 @@
 #include "growthuq/campaign/data_uncertainty.hpp"
+#include "campaign/progress.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "growthuq/campaign/line_source.hpp"
+#include "campaign/line_source.hpp"
 
 #include "growthuq/rawdata/raw_line_file.hpp"
 

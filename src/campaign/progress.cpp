@@ -1,4 +1,4 @@
-#include "growthuq/campaign/progress.hpp"
+#include "campaign/progress.hpp"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-#include "growthuq/campaign/raw_data_outputs.hpp"
+#include "campaign/raw_data_outputs.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "growthuq/campaign/run_footprint.hpp"
+#include "campaign/run_footprint.hpp"
 
 #include <sys/statvfs.h>
 

@@ -1,4 +1,4 @@
-#include "growthuq/campaign/shared_raw_fits.hpp"
+#include "campaign/shared_raw_fits.hpp"
 
 #include <cstdint>
 #include <stdexcept>

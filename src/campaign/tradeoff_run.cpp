@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "growthuq/campaign/campaign_run.hpp"
+#include "campaign/progress.hpp"
 #include "growthuq/stats/quantity_summary.hpp"
 
 namespace growthuq {

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "commands.hpp"
-#include "growthuq/campaign/run_footprint.hpp"
+#include "campaign/run_footprint.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"

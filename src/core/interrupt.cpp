@@ -1,4 +1,4 @@
-#include "growthuq/core/interrupt.hpp"
+#include "core/interrupt.hpp"
 
 #include <csignal>
 

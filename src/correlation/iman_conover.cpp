@@ -10,8 +10,8 @@
 
 #include "correlation/score_reordering.hpp"
 #include "growthuq/distributions/standard_normal.hpp"
-#include "sampling/avx2_clone.hpp"
-#include "sampling/large_buffer.hpp"
+#include "core/avx2_clone.hpp"
+#include "core/large_buffer.hpp"
 #include "stats/cross_products.hpp"
 #include "stats/keyed_sort.hpp"
 

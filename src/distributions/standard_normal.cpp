@@ -12,7 +12,7 @@
 
 #include "distributions/as241.hpp"
 #include "distributions/checks.hpp"
-#include "sampling/avx2_clone.hpp"
+#include "core/avx2_clone.hpp"
 
 namespace growthuq {
 namespace {

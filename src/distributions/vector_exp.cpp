@@ -1,6 +1,6 @@
 #include "distributions/vector_exp.hpp"
 
-#include "sampling/avx2_clone.hpp"
+#include "core/avx2_clone.hpp"
 
 namespace growthuq::detail {
 

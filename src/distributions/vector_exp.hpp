@@ -1,7 +1,7 @@
 // exp for the lognormal quantile, written so that a batch loop vectorizes it (branch-free, no
 // table, no library call) and gives the same bits in every lane width: SSE2 scalar, SSE2 and
 // AVX2 vectors use the same IEEE operations in the same order (no fused multiply-add, see
-// sampling/avx2_clone.hpp). The algorithm is Moshier's Cephes exp (Cephes Math Library, 1984-
+// core/avx2_clone.hpp). The algorithm is Moshier's Cephes exp (Cephes Math Library, 1984-
 // 2000, exp.c): k = round(x / ln 2), r = x - k ln 2 in two parts (Cody & Waite 1980), the
 // Pade form exp(r) = 1 + 2 r P(r^2) / (Q(r^2) - r P(r^2)) on |r| <= ln(2)/2, whose relative
 // error Cephes reports as 2.2e-16 peak over the double range (here without fused multiply-add:

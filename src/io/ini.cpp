@@ -1,4 +1,4 @@
-#include "growthuq/io/ini.hpp"
+#include "io/ini.hpp"
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"

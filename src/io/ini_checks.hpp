@@ -7,7 +7,7 @@
 #include <string_view>
 
 #include "growthuq/core/units.hpp"
-#include "growthuq/io/ini.hpp"
+#include "io/ini.hpp"
 
 namespace growthuq::detail {
 

@@ -9,7 +9,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
-#include "growthuq/io/ini.hpp"
+#include "io/ini.hpp"
 #include "io/ini_checks.hpp"
 
 namespace growthuq {

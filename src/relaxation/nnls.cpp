@@ -1,4 +1,4 @@
-#include "growthuq/relaxation/nnls.hpp"
+#include "relaxation/nnls.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "growthuq/relaxation/noise.hpp"
+#include "relaxation/noise.hpp"
 
 #include <cmath>
 #include <numbers>

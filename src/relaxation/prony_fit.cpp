@@ -15,7 +15,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
-#include "growthuq/relaxation/nnls.hpp"
+#include "relaxation/nnls.hpp"
 #include "growthuq/relaxation/simulator.hpp"
 
 namespace growthuq {

@@ -12,7 +12,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
-#include "growthuq/relaxation/noise.hpp"
+#include "relaxation/noise.hpp"
 
 namespace growthuq {
 namespace {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "growthuq/sampling/random_stream.hpp"
-#include "sampling/avx2_clone.hpp"
+#include "core/avx2_clone.hpp"
 #include "sampling/latin_column.hpp"
 
 namespace growthuq {

@@ -10,7 +10,7 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/sampling/random_stream.hpp"
 #include "correlation/score_reordering.hpp"
-#include "sampling/large_buffer.hpp"
+#include "core/large_buffer.hpp"
 #include "sampling/latin_column.hpp"
 #include "stats/keyed_sort.hpp"
 

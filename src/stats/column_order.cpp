@@ -1,4 +1,4 @@
-#include "growthuq/stats/column_order.hpp"
+#include "stats/column_order.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "sampling/large_buffer.hpp"
+#include "core/large_buffer.hpp"
 #include "stats/keyed_sort.hpp"
 
 namespace growthuq {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "sampling/avx2_clone.hpp"
+#include "core/avx2_clone.hpp"
 
 namespace growthuq::detail {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "growthuq/stats/column_order.hpp"
+#include "stats/column_order.hpp"
 #include "growthuq/stats/pca.hpp"
 #include "stats/cross_products.hpp"
 

@@ -7,8 +7,8 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/relaxation/modulus.hpp"
-#include "growthuq/relaxation/nnls.hpp"
-#include "growthuq/relaxation/noise.hpp"
+#include "relaxation/nnls.hpp"
+#include "relaxation/noise.hpp"
 
 namespace growthuq {
 namespace {

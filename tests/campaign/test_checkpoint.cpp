@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "growthuq/campaign/campaign_file.hpp"
-#include "growthuq/campaign/checkpoint_manifest.hpp"
+#include "campaign/checkpoint_manifest.hpp"
 #include "growthuq/rawdata/raw_line_file.hpp"
-#include "growthuq/campaign/chunk_log.hpp"
+#include "campaign/chunk_log.hpp"
 #include "growthuq/core/error.hpp"
 #include "support/scratch_directory.hpp"
 #include "support/text_file.hpp"

@@ -20,7 +20,7 @@
 #include <thread>
 #include <vector>
 
-#include "growthuq/campaign/chunk_log.hpp"
+#include "campaign/chunk_log.hpp"
 #include "support/cli_run.hpp"
 #include "support/scratch_directory.hpp"
 #include "support/text_file.hpp"

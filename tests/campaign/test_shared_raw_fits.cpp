@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "growthuq/campaign/progress.hpp"
-#include "growthuq/campaign/shared_raw_fits.hpp"
+#include "campaign/progress.hpp"
+#include "campaign/shared_raw_fits.hpp"
 #include "growthuq/pool/pool.hpp"
 #include "growthuq/rawdata/raw_line_file.hpp"
 #include "growthuq/rawdata/raw_line_fit.hpp"

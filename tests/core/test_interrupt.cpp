@@ -6,7 +6,7 @@
 #include <csignal>
 #include <initializer_list>
 
-#include "growthuq/core/interrupt.hpp"
+#include "core/interrupt.hpp"
 
 using namespace growthuq;
 

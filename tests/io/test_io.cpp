@@ -6,7 +6,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/io/csv.hpp"
-#include "growthuq/io/ini.hpp"
+#include "io/ini.hpp"
 #include "growthuq/io/output_file.hpp"
 
 using namespace growthuq;

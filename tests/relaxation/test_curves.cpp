@@ -12,7 +12,7 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/io/csv.hpp"
-#include "growthuq/io/ini.hpp"
+#include "io/ini.hpp"
 #include "growthuq/relaxation/curves.hpp"
 #include "growthuq/relaxation/simulator.hpp"
 

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "growthuq/core/error.hpp"
-#include "growthuq/relaxation/nnls.hpp"
-#include "growthuq/relaxation/noise.hpp"
+#include "relaxation/nnls.hpp"
+#include "relaxation/noise.hpp"
 #include "growthuq/relaxation/prony_fit.hpp"
 #include "growthuq/relaxation/simulator.hpp"
 

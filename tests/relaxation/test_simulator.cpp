@@ -7,7 +7,7 @@
 #include <random>
 
 #include "growthuq/core/error.hpp"
-#include "growthuq/relaxation/noise.hpp"
+#include "relaxation/noise.hpp"
 #include "growthuq/relaxation/simulator.hpp"
 
 using namespace growthuq;

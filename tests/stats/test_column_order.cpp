@@ -11,7 +11,7 @@
 
 #include "growthuq/core/units.hpp"
 #include "growthuq/sampling/random_stream.hpp"
-#include "growthuq/stats/column_order.hpp"
+#include "stats/column_order.hpp"
 #include "growthuq/stats/line_analysis.hpp"
 #include "growthuq/stats/quantity_summary.hpp"
 #include "growthuq/stats/ranks.hpp"

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "growthuq/campaign/chunk_log.hpp"
+#include "campaign/chunk_log.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 

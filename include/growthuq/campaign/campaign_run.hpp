@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "growthuq/campaign/campaign_file.hpp"
-#include "growthuq/campaign/line_result.hpp"
-#include "growthuq/campaign/progress.hpp"
+#include "growthuq/evaluation/line_result.hpp"
+#include "growthuq/campaign/progress_mode.hpp"
 #include "growthuq/correlation/matrix_file.hpp"
 #include "growthuq/distributions/line_file.hpp"
 #include "growthuq/evaluation/evaluator.hpp"

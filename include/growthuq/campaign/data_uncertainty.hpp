@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "growthuq/campaign/campaign_run.hpp"
-#include "growthuq/campaign/progress.hpp"
+#include "growthuq/campaign/progress_mode.hpp"
 #include "growthuq/pool/pool.hpp"
 
 namespace growthuq {

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "growthuq/campaign/line_result.hpp"
+#include "growthuq/evaluation/line_result.hpp"
 
 namespace growthuq {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "growthuq/campaign/campaign_file.hpp"
-#include "growthuq/campaign/progress.hpp"
+#include "growthuq/campaign/progress_mode.hpp"
 #include "growthuq/campaign/tradeoff.hpp"
 #include "growthuq/pool/pool.hpp"
 

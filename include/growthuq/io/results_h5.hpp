@@ -36,7 +36,7 @@
 #include <string>
 #include <vector>
 
-#include "growthuq/campaign/line_result.hpp"
+#include "growthuq/evaluation/line_result.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "growthuq/stats/line_analysis.hpp"
 

@@ -11,7 +11,7 @@
 
 #include <Eigen/Core>
 
-#include "growthuq/campaign/line_result.hpp"
+#include "growthuq/evaluation/line_result.hpp"
 #include "growthuq/core/large_vector.hpp"
 #include "growthuq/stats/quantity_summary.hpp"
 

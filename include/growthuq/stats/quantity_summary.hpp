@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "growthuq/campaign/line_result.hpp"
+#include "growthuq/evaluation/line_result.hpp"
 #include "growthuq/evaluation/sample_status.hpp"
 
 namespace growthuq {

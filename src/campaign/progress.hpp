@@ -10,12 +10,9 @@
 #include <string>
 #include <string_view>
 
+#include "growthuq/campaign/progress_mode.hpp"
+
 namespace growthuq {
-
-enum class ProgressMode { none, lines, bar };
-
-// bar when stderr is a terminal, lines otherwise, none when `quiet`.
-ProgressMode choose_progress_mode(bool quiet);
 
 class Progress {
  public:

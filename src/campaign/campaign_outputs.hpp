@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "growthuq/campaign/campaign_run.hpp"
-#include "growthuq/campaign/checkpoint_manifest.hpp"
-#include "growthuq/campaign/line_result.hpp"
-#include "growthuq/campaign/progress.hpp"
+#include "campaign/checkpoint_manifest.hpp"
+#include "growthuq/evaluation/line_result.hpp"
+#include "campaign/progress.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "growthuq/pool/pool.hpp"
 

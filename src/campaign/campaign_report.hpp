@@ -6,7 +6,7 @@
 #include <span>
 #include <string>
 
-#include "growthuq/campaign/line_result.hpp"
+#include "growthuq/evaluation/line_result.hpp"
 
 namespace growthuq {
 

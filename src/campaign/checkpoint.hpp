@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "growthuq/campaign/campaign_run.hpp"
-#include "growthuq/campaign/checkpoint_manifest.hpp"
-#include "growthuq/campaign/chunk_log.hpp"
+#include "campaign/checkpoint_manifest.hpp"
+#include "campaign/chunk_log.hpp"
 #include "growthuq/pool/pool.hpp"
 
 namespace growthuq {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "growthuq/campaign/line_result.hpp"
+#include "growthuq/evaluation/line_result.hpp"
 #include "growthuq/io/output_file.hpp"
 
 namespace growthuq {

@@ -33,7 +33,7 @@
 
 #include "growthuq/campaign/campaign_run.hpp"
 #include "growthuq/campaign/data_uncertainty.hpp"
-#include "growthuq/campaign/line_result.hpp"
+#include "growthuq/evaluation/line_result.hpp"
 #include "growthuq/io/results_h5.hpp"
 
 namespace growthuq {
