@@ -135,19 +135,16 @@ void read_campaign_section(const IniDocument& document, const IniSection& sectio
 
 void read_instrument_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
   SectionReader reader(document, section);
+  // The same parser, ranges and messages as the commands' --rho-um, --nu and --k-sys.
+  const auto entry = [&reader](const IniEntry* found, std::string key) {
+    return found ? InstrumentEntry{found->value, reader.location(*found), found->key}
+                 : InstrumentEntry{std::nullopt, "", std::move(key)};
+  };
   const IniEntry& rho = reader.required("probe_radius_um");
-  campaign.instrument.probe_radius = reader.number(rho, 1e-3, 1e3, "a probe radius in um, in (0, 1000]") * 1e-6;
-  if (!(campaign.instrument.probe_radius > 0.0)) throw_bad_value(reader.location(rho), rho.key, rho.value, "a positive radius in um");
-  if (const IniEntry* nu = reader.optional("poisson_ratio")) {
-    campaign.instrument.poisson_ratio = reader.number(*nu, 0.0, std::nextafter(1.0, 0.0), "a Poisson ratio in [0, 1)");
-  }
-  if (const IniEntry* k_sys = reader.optional("sensor_stiffness_N_per_m")) {
-    campaign.instrument.sensor_stiffness =
-        k_sys->value == "inf" ? std::numeric_limits<double>::infinity()
-                              : reader.number(*k_sys, 1e-12, 1e12, "a stiffness in N/m > 0, or inf");
-  }
+  campaign.instrument = parse_instrument({entry(&rho, "probe_radius_um"), entry(reader.optional("poisson_ratio"), "poisson_ratio"),
+                                          entry(reader.optional("sensor_stiffness_N_per_m"), "sensor_stiffness_N_per_m")},
+                                         ProbeRadius::required);
   reader.reject_unknown_keys("probe_radius_um, poisson_ratio, sensor_stiffness_N_per_m");
-  validate(campaign.instrument, reader.location(rho));
 }
 
 void read_growth_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {

@@ -101,8 +101,8 @@ void write_relaxation(ResultsH5Writer& h5, const std::string& line, const RawLin
     table[17].real.push_back(curve.turgor * 1e-6);
     table[18].real.push_back(curve.diameter * 1e6);
     table[19].real.push_back(curve.thickness * 1e9);
-    table[20].real.push_back(curve.probe_radius * 1e6);
-    const std::vector<double> model = fitted_force(curve, f, relaxation.options.poisson);
+    table[20].real.push_back(to_um(curve.probe_radius_m));
+    const std::vector<double> model = fitted_force(curve, f, relaxation.options.poisson_ratio);
     for (std::size_t i = 0; i < curve.t.size(); ++i) {
       curve_index.push_back(static_cast<std::int32_t>(c));
       t.real.push_back(curve.t[i]);

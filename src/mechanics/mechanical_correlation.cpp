@@ -55,7 +55,7 @@ SampleBlock draw_mechanical_samples(const MechanicalDrawOptions& options) {
 }
 
 MechanicalCorrelation mechanical_rank_correlation(const MechanicalDrawOptions& options,
-                                                  const ThinShellParameters& shell,
+                                                  const Instrument& shell,
                                                   std::string_view location) {
   validate(options, location);
   const ThinShellForward forward(shell, location);

@@ -134,7 +134,7 @@ std::vector<RelaxationCurve> read_relaxation_curves(const std::string& curves_pa
     curve.turgor = meta->second.turgor;
     curve.diameter = meta->second.diameter;
     curve.thickness = meta->second.thickness;
-    curve.probe_radius = meta->second.probe_radius;
+    curve.probe_radius_m = meta->second.probe_radius;
   }
   return curves;
 }
