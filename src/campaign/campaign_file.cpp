@@ -150,7 +150,7 @@ void read_instrument_section(const IniDocument& document, const IniSection& sect
 void read_growth_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
   SectionReader reader(document, section);
   if (const IniEntry* p0 = reader.optional("yield_pressure_MPa")) {
-    campaign.yield_pressure = reader.number(*p0, 0.0, 100.0, "a yield pressure in MPa in [0, 100]") * 1e6;
+    campaign.yield_pressure = from_MPa(reader.number(*p0, 0.0, 100.0, "a yield pressure in MPa in [0, 100]"));
   }
   if (const IniEntry* reference = reader.optional("reference_line")) campaign.reference_line = reference->value;
   reader.reject_unknown_keys("yield_pressure_MPa, reference_line");
@@ -159,10 +159,10 @@ void read_growth_section(const IniDocument& document, const IniSection& section,
 void read_physics_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
   SectionReader reader(document, section);
   MechanicalDrawOptions& draw = campaign.physics_correlation;
-  if (const IniEntry* p = reader.optional("p_MPa")) draw.p = parse_range(reader, *p, 1e6);
-  if (const IniEntry* E = reader.optional("E_MPa")) draw.E = parse_range(reader, *E, 1e6);
-  if (const IniEntry* h = reader.optional("h_nm")) draw.h = parse_range(reader, *h, 1e-9);
-  if (const IniEntry* d0 = reader.optional("d0_um")) draw.d0 = parse_range(reader, *d0, 1e-6);
+  if (const IniEntry* p = reader.optional("p_MPa")) draw.p = parse_range(reader, *p, unit_factor::MPa);
+  if (const IniEntry* E = reader.optional("E_MPa")) draw.E = parse_range(reader, *E, unit_factor::MPa);
+  if (const IniEntry* h = reader.optional("h_nm")) draw.h = parse_range(reader, *h, unit_factor::nm);
+  if (const IniEntry* d0 = reader.optional("d0_um")) draw.d0 = parse_range(reader, *d0, unit_factor::um);
   if (const IniEntry* scale = reader.optional("scale")) {
     if (scale->value == "uniform") {
       draw.scale = DrawScale::uniform;

@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/core/units.hpp"
 #include "growthuq/correlation/matrix_file.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "growthuq/mechanics/instrument.hpp"
@@ -148,10 +149,10 @@ int run_correlate(const Arguments& arguments) {
   const Origins origins(from_command_line, options.config);
 
   MechanicalDrawOptions draws;
-  draws.p = parse_range(options.p_MPa, origins, "p-MPa", 1e6);
-  draws.E = parse_range(options.E_MPa, origins, "E-MPa", 1e6);
-  draws.h = parse_range(options.h_nm, origins, "h-nm", 1e-9);
-  draws.d0 = parse_range(options.d0_um, origins, "d0-um", 1e-6);
+  draws.p = parse_range(options.p_MPa, origins, "p-MPa", unit_factor::MPa);
+  draws.E = parse_range(options.E_MPa, origins, "E-MPa", unit_factor::MPa);
+  draws.h = parse_range(options.h_nm, origins, "h-nm", unit_factor::nm);
+  draws.d0 = parse_range(options.d0_um, origins, "d0-um", unit_factor::um);
   if (options.scale == "uniform") {
     draws.scale = DrawScale::uniform;
   } else if (options.scale == "log") {

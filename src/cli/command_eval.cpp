@@ -93,10 +93,10 @@ int evaluate_point(const EvalOptions& options, const Instrument& parameters) {
   const bool has_h = !options.h_nm.empty();
   SampleBlock block(1);
   block.set_column("k", std::vector<double>{positive_flag(options.k, "--k", "a positive stiffness in N/m")});
-  block.set_column("d", std::vector<double>{positive_flag(options.d_um, "--d-um", "a positive diameter in um") * 1e-6});
-  block.set_column("d0", std::vector<double>{positive_flag(options.d0_um, "--d0-um", "a positive diameter in um") * 1e-6});
+  block.set_column("d", std::vector<double>{from_um(positive_flag(options.d_um, "--d-um", "a positive diameter in um"))});
+  block.set_column("d0", std::vector<double>{from_um(positive_flag(options.d0_um, "--d0-um", "a positive diameter in um"))});
   if (has_h) {
-    block.set_column("h", std::vector<double>{positive_flag(options.h_nm, "--h-nm", "a positive thickness in nm") * 1e-9});
+    block.set_column("h", std::vector<double>{from_nm(positive_flag(options.h_nm, "--h-nm", "a positive thickness in nm"))});
   }
   const ThinShellTurgor turgor(parameters, command);
   const ThinShellModulus modulus;

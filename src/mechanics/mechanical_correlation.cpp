@@ -7,6 +7,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/core/units.hpp"
 #include "growthuq/mechanics/thin_shell_evaluators.hpp"
 #include "growthuq/sampling/random_stream.hpp"
 #include "growthuq/stats/rank_correlation.hpp"
@@ -28,10 +29,10 @@ double draw(const DrawRange& range, DrawScale scale, double u) {
 }  // namespace
 
 void validate(const MechanicalDrawOptions& options, std::string_view location) {
-  check_range(options.p, location, "p_MPa", 1e6);
-  check_range(options.E, location, "E_MPa", 1e6);
-  check_range(options.h, location, "h_nm", 1e-9);
-  check_range(options.d0, location, "d0_um", 1e-6);
+  check_range(options.p, location, "p_MPa", unit_factor::MPa);
+  check_range(options.E, location, "E_MPa", unit_factor::MPa);
+  check_range(options.h, location, "h_nm", unit_factor::nm);
+  check_range(options.d0, location, "d0_um", unit_factor::um);
   if (options.samples < 3) {
     throw_bad_value(location, "samples", std::to_string(options.samples), "at least 3 samples");
   }
