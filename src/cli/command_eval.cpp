@@ -3,6 +3,7 @@
 // named as `growthuq sample` writes them (k_N_per_m, h_nm, d_um, d0_um; h optional) written
 // back with the outputs and a status column appended.
 #include <array>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -105,7 +106,7 @@ int evaluate_point(const EvalOptions& options, const Instrument& parameters) {
   const SampleStatus status = block.status()[0];
   std::cout << "thin-shell inverse (Vogler et al. 2013, Arnoldi et al. 2000): rho = " << options.rho_um
             << " um, nu = " << format_double(parameters.poisson_ratio) << ", k_sys = "
-            << (options.k_sys.empty() ? "inf (ideal sensor)" : options.k_sys + " N/m") << "\n";
+            << (std::isinf(parameters.sensor_stiffness_N_per_m) ? "inf (ideal sensor)" : options.k_sys + " N/m") << "\n";
   for (const Output& output : outputs) {
     if (output.needs_h && !has_h) continue;
     const Quantity* quantity = find_quantity(output.quantity);
@@ -216,7 +217,7 @@ int evaluate_file(const EvalOptions& options, const Instrument& parameters) {
 
   std::cout << table.rows.size() << (table.rows.size() == 1 ? " tube" : " tubes") << " from " << table.path << " (rho = " << options.rho_um
             << " um, nu = " << format_double(parameters.poisson_ratio) << ", k_sys = "
-            << (options.k_sys.empty() ? "inf" : options.k_sys + " N/m") << ")"
+            << (std::isinf(parameters.sensor_stiffness_N_per_m) ? "inf" : options.k_sys + " N/m") << ")"
             << (has_h ? "" : "; no thickness column h_nm: turgor outputs only") << "\n";
   for (const auto& [status, count] : counts) {
     std::cout << "  " << std::left << std::setw(28) << to_string(status) << count;
