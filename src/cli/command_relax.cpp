@@ -1,6 +1,6 @@
 // growthuq relax: generalized Maxwell fits of force-relaxation curves, one row per curve in a
 // CSV, a summary on stdout and, on request, lognormal distribution entries for tau and e_inf
-// in the line-file format (PHYSICS.md section 5).
+// in the line-file format (Eqs. (R1)-(R7), src/relaxation/README.md).
 #include <algorithm>
 #include <cmath>
 #include <iostream>

@@ -159,7 +159,7 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
     return exit_status_of_signal(interrupted.reason());
   }
   if (std::getenv("GROWTHUQ_TIMINGS") != nullptr) {
-    // One line per process, for measuring how the work is shared (tools/bench-campaign-scaling).
+    // One line per process, for measuring how the work is shared (tools/bench/bench-campaign-scaling).
     const RunTimings& t = outcome.run.timings;
     std::fprintf(stderr,
                  "growthuq run: timings of process %d of %d [s]: design %.3f evaluation %.3f sharing %.3f statistics %.3f "

@@ -1,6 +1,7 @@
-// Reading and writing plant-line distribution files (format in line_file.hpp and the README).
-// Validation is strict because these files are typed by hand: every key must belong to the
-// section's law, every parameter is checked at its own line, and errors name file and line.
+// Reading and writing plant-line distribution files (format in line_file.hpp and
+// distributions/README.md). Validation is strict because these files are typed by hand: every key
+// must belong to the section's law, every parameter is checked at its own line, and errors name
+// file and line.
 #include "growthuq/distributions/line_file.hpp"
 
 #include <algorithm>

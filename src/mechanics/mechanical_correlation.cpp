@@ -1,4 +1,5 @@
-// Rank correlation of (k, h, d, d0) from the forward thin-shell model (PHYSICS.md section 4).
+// Rank correlation of (k, h, d, d0) from the forward thin-shell model (Eq. (M16),
+// src/mechanics/README.md).
 #include "growthuq/mechanics/mechanical_correlation.hpp"
 
 #include <cmath>

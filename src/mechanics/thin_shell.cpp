@@ -1,8 +1,9 @@
-// Thin-shell inverse and forward model (PHYSICS.md section 3 and 4). Equations:
-//   relation 1 (Vogler et al. 2013):  p d / (2 h) = E ln(lambda),  lambda = d / d0
-//   relation 2 (Arnoldi et al. 2000): k = (3 pi / 4) p d phi(rho / alpha),
+// Thin-shell inverse and forward model (Eqs. (M1)-(M10), src/mechanics/README.md). Equations:
+//   relation 1, Eq. (M1) (Vogler et al. 2013):  p d / (2 h) = E ln(lambda),  lambda = d / d0
+//   relation 2, Eqs. (M2), (M3) (Arnoldi et al. 2000): k = (3 pi / 4) p d phi(rho / alpha),
 //                                     alpha^2 = 3 p d^3 / (16 (2 E h / (1 - nu^2) - p d))
-// Substituting 1 into alpha gives alpha = d sqrt(3 q / (16 (1 - q))), q = (1 - nu^2) ln(lambda).
+// Substituting 1 into alpha gives alpha = d sqrt(3 q / (16 (1 - q))), q = (1 - nu^2) ln(lambda)
+// (Eq. (M5)).
 #include "growthuq/mechanics/thin_shell.hpp"
 
 #include <cmath>

@@ -1,5 +1,5 @@
-// Reading raw.ini (format in raw_line_file.hpp and the README). Every key is checked where it
-// stands so that an error names the line a lab has to fix.
+// Reading raw.ini (format in raw_line_file.hpp and distributions/README.md). Every key is checked
+// where it stands so that an error names the line a lab has to fix.
 #include "growthuq/rawdata/raw_line_file.hpp"
 
 #include <algorithm>

@@ -3,7 +3,7 @@
 # identical byte for byte, and results.h5 value for value (its analyses and raw-data fits are
 # computed by all processes together; HDF5 stores times, so its bytes differ), when
 # /usr/bin/python3 has h5py: results must not depend on the number of processes.
-# Variables: CLI, MPIEXEC, PROCESSES, CAMPAIGN, WORK, COMPARE (tools/compare_results_h5.py);
+# Variables: CLI, MPIEXEC, PROCESSES, CAMPAIGN, WORK, COMPARE (tools/bench/compare_results_h5.py);
 # SAMPLES (optional) overrides the campaign's samples per line.
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")

@@ -94,7 +94,7 @@ TEST_CASE("a small campaign end to end: files, columns, summaries from samples.c
     const std::string& status = row[12];
     const auto cell = [&](std::size_t c) { return std::stod(row[c]); };
     // Every row's outputs follow from the same row's inputs (chunks were placed where they
-    // belong): eta = tau (1 - e_inf) E [PHYSICS.md sec. 5] and v / (p d^2 / (4 eta h)) = kappa
+    // belong): eta = tau (1 - e_inf) E [Eq. (G1)] and v / (p d^2 / (4 eta h)) = kappa
     // [sec. 6], the same for every growing tube.
     if (status == "ok") {
       const double eta = cell(6) * (1 - cell(7) / 100) * cell(9);  // s x MPa = MPa s

@@ -12,9 +12,9 @@
 // most data sets. The test requires every true median within the Bonferroni-simultaneous band,
 // |ln(true / estimate)| <= 3.023 sd of the log replicate medians (z_{1 - 0.05/40}; valid under
 // any dependence; log scale because medians of positive, skewed quantities are closer to
-// lognormal). Measured over 30 synthetic data sets (tools/data-uncertainty-coverage, README
-// "Data uncertainty"): the per-quantity 95 % intervals covered 563 of 600 true medians (93.8 %)
-// and the band held in 27 of 30 sets (nominal >= 95 %): the bootstrap is slightly narrow, and a
+// lognormal). Measured over 30 synthetic data sets (tools/bench/data-uncertainty-coverage,
+// campaigns/README.md "Data uncertainty"): the per-quantity 95 % intervals covered 563 of 600
+// true medians (93.8 %) and the band held in 27 of 30 sets (nominal >= 95 %): the bootstrap is slightly narrow, and a
 // new draw of the shipped data could fail this test with a probability of about 10 %. The
 // shipped set's largest |z| is printed.
 //

@@ -226,7 +226,7 @@ TEST_CASE("contract: NaN, infinite and out-of-domain parameters are rejected, na
   CHECK(quantile(TruncatedNormal(0, 1, -31, -30), 0.5) == doctest::Approx(-30.023070467827308926).epsilon(16 * eps));
 }
 
-TEST_CASE("lognormal from median and IQR reproduces them (PHYSICS.md section 1)") {
+TEST_CASE("lognormal from median and IQR reproduces them (Eq. D1)") {
   for (const auto& [m, r] : std::vector<std::pair<double, double>>{{2.87, 0.83}, {145, 31}, {0.028, 0.011}, {1e-3, 5e-2}}) {
     const Lognormal law = Lognormal::from_median_iqr(m, r);
     CHECK(quantile(law, 0.5) == doctest::Approx(m).epsilon(4 * eps));

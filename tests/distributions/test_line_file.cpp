@@ -1,5 +1,5 @@
-// Line files: the five shipped files parse and reproduce the published table (PHYSICS.md
-// section 7); every kind of mistake is one InputError naming file and line.
+// Line files: the five shipped files parse and reproduce the published table
+// (distributions/README.md); every kind of mistake is one InputError naming file and line.
 #include <doctest/doctest.h>
 
 #include <cmath>

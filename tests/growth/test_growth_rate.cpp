@@ -36,7 +36,7 @@ SampleBlock growth_block(std::vector<double> p, std::vector<double> d, std::vect
 }  // namespace
 
 TEST_CASE("viscosity eta = tau (1 - einf) E with statuses for bad or extreme inputs") {
-  // Wild-type medians (PHYSICS.md section 7) and E = 50 MPa.
+  // Wild-type medians (published data, distributions/README.md) and E = 50 MPa.
   // Exact: 6.81 * 0.35 * 5e7 = 119175000 (python3 fractions). Three inputs rounded to double
   // and two products: at most 2.5 eps relative, 4 eps allowed.
   const std::vector<double> tau{6.81, 0.0, -1.0, not_a_number, inf, 5.0, 5.0, 5.0, 5.0, 5.0, 1e-300, 1e10, 5.0};
@@ -169,7 +169,7 @@ TEST_CASE("calibrated kappa makes the reference line's predicted median its expe
   SampleBlock block = growth_block(p, d, eta, h);
   GrowthEvaluator(unit).evaluate(block);
   const double predicted = median_growth_rate(block.column("v"), block.status());
-  const double experimental = 0.028e-6;  // wild type, PHYSICS.md section 7
+  const double experimental = 0.028e-6;  // wild type, distributions/README.md
   const double kappa = calibrate_kappa("wild_type", experimental, predicted);
   CHECK(kappa == experimental / predicted);
 

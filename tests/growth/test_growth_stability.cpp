@@ -1,8 +1,8 @@
-// Stability of the viscosity and growth evaluators over the numerical envelope of PHYSICS.md
-// section 8, edges included and beyond (p = p0 exactly, eta from subnormal to 1e300, d and h at
-// their limits): every sample gets a finite value or a status, never a silent NaN, and
-// out_of_range is given exactly when the true value (computed in long double, whose exponent
-// range is far wider) is outside the normal double range.
+// Stability of the viscosity and growth evaluators over the numerical envelope of
+// src/mechanics/README.md, edges included and beyond (p = p0 exactly, eta from subnormal
+// to 1e300, d and h at their limits): every sample gets a finite value or a status, never a silent
+// NaN, and out_of_range is given exactly when the true value (computed in long double, whose
+// exponent range is far wider) is outside the normal double range.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -92,7 +92,7 @@ TEST_CASE("growth rate over the envelope: finite value or status, out_of_range e
   CHECK(counts[0] > 1000);
   CHECK(counts[1] > 1000);
   CHECK(counts[2] > 1000);
-  // Inside the envelope (PHYSICS.md section 8) every growing sample has a value.
+  // Inside the envelope (src/mechanics/README.md) every growing sample has a value.
   for (std::size_t i = 0; i < n; ++i) {
     const bool in_envelope = p[i] > p0 && p[i] <= 2e6 && eta[i] >= 1e6 && eta[i] <= 1e11 && d[i] >= 1e-6 &&
                              d[i] <= 5e-5 && h[i] >= 2e-8 && h[i] <= 2e-6;

@@ -25,7 +25,7 @@ double relative_error(double value, double reference) {
 }  // namespace
 
 TEST_CASE("phi matches 50-digit reference values to 1e-14") {
-  // The PHYSICS.md table, then values from
+  // The table of src/mechanics/README.md (M13), then values from
   //   /usr/bin/python3 -c "import mpmath as mp; mp.mp.dps=50; x=mp.mpf('X');
   //                        print(mp.nstr(x*mp.besselk(1,x)/mp.besselk(0,x), 20))"
   // at points around the series switch (1e-5), the scaled-Bessel range and the large-x

@@ -75,7 +75,7 @@ TEST_CASE("the matrix is a valid correlation matrix and matches a second algorit
     const double E = block.column("E")[i];
     const double h = block.column("h")[i];
     const double d0 = block.column("d0")[i];
-    // Independent burst criterion, PHYSICS.md section 4.
+    // Independent burst criterion, Eq. (M9), src/mechanics/README.md.
     if (p / (2 * h * E) * d0 > 1 / std::numbers::e) {
       ++burst;
       continue;

@@ -78,8 +78,8 @@ TEST_CASE("turgor and modulus match a 40-digit solution of the two original rela
     CHECK(relative_error(modulus.hoop_stress, c.p * c.d / (2 * c.h)) < 1e-13);
     CHECK(relative_error(modulus.wall_stiffness, c.E * c.h) < 1e-13);
   }
-  // The probe radius dominates (PHYSICS.md: p falls roughly 2x from rho = 0.25 to 1 um):
-  // 255998.1 / 108817.5 = 2.35 for the pme48 medians above.
+  // The probe radius dominates (src/mechanics/README.md: p falls roughly 2x from rho = 0.25
+  // to 1 um): 255998.1 / 108817.5 = 2.35 for the pme48 medians above.
   CHECK(cases[1].p / cases[2].p == doctest::Approx(2.3525).epsilon(1e-4));
 }
 
@@ -119,8 +119,8 @@ TEST_CASE("forward model: closed-form stretch and the small-strain series") {
     CHECK(relative_error(forward.k_measured, k) < 1e-13);
   }
   // Small strain: -W0(-z)/z = sum n^(n-1)/n! z^(n-1) = 1 + z + (3/2) z^2 + (8/3) z^3
-  // + (125/24) z^4 + O(z^5) (the Taylor series of W0 about 0, Corless et al. 1996); the rest is 1e-19
-  // for z = 1e-4, so the tolerance is the rounding of lambda and of the series (4 ulp).
+  // + (125/24) z^4 + O(z^5) (the Taylor series of W0 about 0, Corless et al. 1996); the rest is
+  // 1e-19 for z = 1e-4, so the tolerance is the rounding of lambda and of the series (4 ulp).
   const double z = 1e-4;
   const double d0 = 5 * um;
   const double h = 100 * nm;
@@ -151,7 +151,7 @@ TEST_CASE("forward model at the burst limit c d0 = 1/e") {
 }
 
 TEST_CASE("round trip forward(inverse(k, d, d0, h)) over 10^4 random points of the envelope") {
-  // Envelope of PHYSICS.md section 8: k 0.01-100 N/m, d0 1-50 um, lambda 1.001 to 2.7 (the
+  // Envelope of src/mechanics/README.md: k 0.01-100 N/m, d0 1-50 um, lambda 1.001 to 2.7 (the
   // forward model's stable branch ends at lambda = e: above it, W0 returns the other root),
   // h 0.02-2 um, rho 0.01-10 um, nu 0-0.45, k_sys infinite or 10^1-10^4 times k. 1e-10: the
   // worst conditioning of the chain is W0 near lambda = 2.7 (|1/(1 - ln lambda)| ~ 150).

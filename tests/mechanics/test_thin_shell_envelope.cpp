@@ -1,5 +1,5 @@
 // Stability at the extremes: the thin-shell evaluators over a grid of the envelope of
-// PHYSICS.md section 8, edges included. Every output is finite or its sample carries a status,
+// src/mechanics/README.md, edges included. Every output is finite or its sample carries a status,
 // no exception leaves a batch, and each status appears exactly where the model says it must.
 #include <doctest/doctest.h>
 
@@ -59,9 +59,9 @@ struct Inverse {
 TEST_CASE("inverse evaluators over the envelope: a value or the status the model predicts") {
   // Stretch edges: 1 + 1e-12, the physiological range, just below and above e (the largest
   // stable stretch), q = 1 - 1e-12 (the largest membrane stretch: unstable_branch unless nu = 0,
-  // where it is below e), just beyond it, no stretch and shrinkage; k 0.01-100 N/m plus stiffnesses at and just below
-  // a 1000 N/m sensor; d 1-50 um; rho 0.01-10 um; nu 0-0.45; h 0.02-2 um; an ideal sensor and
-  // a real one.
+  // where it is below e), just beyond it, no stretch and shrinkage; k 0.01-100 N/m plus stiffnesses
+  // at and just below a 1000 N/m sensor; d 1-50 um; rho 0.01-10 um; nu 0-0.45; h 0.02-2 um; an
+  // ideal sensor and a real one.
   const double sensor = 1e3;
   const std::vector<double> stiffnesses{0.01, 0.1, 0.5, 2.87, 10, 100, sensor * (1 - 1e-12), sensor, 2 * sensor};
   const std::vector<double> diameters{1 * um, 4 * um, 6.56 * um, 20 * um, 50 * um};

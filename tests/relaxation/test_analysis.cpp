@@ -19,11 +19,12 @@ using namespace growthuq::testing;
 
 namespace {
 
-// Wild-type-like tube (PHYSICS.md section 7): p = 0.3 MPa, d = 6.56 um, h = 145 nm, rho = 0.5 um.
+// Wild-type-like tube (published data, distributions/README.md): p = 0.3 MPa, d = 6.56 um,
+// h = 145 nm, rho = 0.5 um.
 const ShellGeometry tube{0.3e6, 6.56e-6, 145e-9, {0.5e-6, 0.2}};
 
-// Forward relation 2 of PHYSICS.md: k(E) = (3 pi / 4) p d phi(rho / alpha),
-// alpha^2 = 3 p d^3 / (16 (2 E h / (1 - nu^2) - p d)).
+// Forward relation, Eqs. (M2), (M3) of src/mechanics/README.md:
+// k(E) = (3 pi / 4) p d phi(rho / alpha), alpha^2 = 3 p d^3 / (16 (2 E h / (1 - nu^2) - p d)).
 double stiffness(double E, const ShellGeometry& s) {
   const double alpha = std::sqrt(3.0 * s.turgor * std::pow(s.diameter, 3) /
                                  (16.0 * (2.0 * E * s.thickness / (1.0 - s.instrument.poisson_ratio * s.instrument.poisson_ratio) - s.turgor * s.diameter)));
@@ -56,7 +57,7 @@ PronyFit exact_step_fit(double dt, double& modulus0, const MaxwellModel& model =
 
 TEST_CASE("modulus: inverts the forward Arnoldi relation across the envelope") {
   // E from just above the membrane limit (1 - nu^2) p d / (2 h) = 6.5 MPa to 1000 MPa
-  // (PHYSICS.md section 8): E_r(k(E)) == E. The inverse goes through
+  // (envelope of src/mechanics/README.md): E_r(k(E)) == E. The inverse goes through
   // arnoldi_phi_inverse (a root to ~1 ulp in x) and squares x: 1e-12 relative.
   for (double E : {6.6e6, 8.0e6, 23.0e6, 200.0e6, 1000.0e6}) {
     CAPTURE(E);
@@ -181,7 +182,7 @@ TEST_CASE("analysis: a curve whose force peaks at its end is reported, not fitte
 }
 
 TEST_CASE("modulus: relaxation_stiffness is the forward relation and inverts relaxation_modulus") {
-  // Against the test's own forward relation (written from PHYSICS.md, not the library's) and
+  // Against the test's own forward relation (written from Eq. (R3), not the library's) and
   // as a round trip: k -> E_r -> k to the accuracy of arnoldi_phi_inverse (1e-12).
   for (double E : {6.6e6, 23.0e6, 200.0e6, 1000.0e6}) {
     CAPTURE(E);

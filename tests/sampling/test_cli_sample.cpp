@@ -56,21 +56,21 @@ const char* const line_file =
     "median = 2.87\n"
     "iqr = 0.83\n"
     "unit = N/m\n"
-    "source = PHYSICS.md section 7\n"
+    "source = published median and IQR\n"
     "\n"
     "[h]\n"
     "law = lognormal\n"
     "median = 145\n"
     "iqr = 31\n"
     "unit = nm\n"
-    "source = PHYSICS.md section 7\n"
+    "source = published median and IQR\n"
     "\n"
     "[d]\n"
     "law = lognormal\n"
     "median = 6.56\n"
     "iqr = 1.19\n"
     "unit = um\n"
-    "source = PHYSICS.md section 7\n";
+    "source = published median and IQR\n";
 
 }  // namespace
 

@@ -18,7 +18,8 @@ using namespace growthuq;
 namespace {
 
 std::vector<DesignVariable> wild_type_variables() {
-  // PHYSICS.md section 7, wild type: median (IQR) of k [N/m], h [nm], d [um], d0 [um].
+  // Published data (distributions/README.md), wild type: median (IQR) of k [N/m], h [nm],
+  // d [um], d0 [um].
   return {{"k", Lognormal::from_median_iqr(2.87, 0.83)},
           {"h", Lognormal::from_median_iqr(145, 31)},
           {"d", Lognormal::from_median_iqr(6.56, 1.19)},

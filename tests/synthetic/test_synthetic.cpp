@@ -39,8 +39,8 @@ LineDistributions truth_of(const std::string& line) {
   return read_line_file(std::string(GROWTHUQ_SOURCE_DIR) + "/distributions/" + line + ".ini");
 }
 
-// A wild-type-like tube (PHYSICS.md section 7): p from k = 2.87, d = 6.56, d0 = 5.35 um at rho
-// 0.5 um is 0.2528 MPa.
+// A wild-type-like tube (published data, distributions/README.md): p from k = 2.87, d = 6.56,
+// d0 = 5.35 um at rho 0.5 um is 0.2528 MPa.
 RelaxationTube wild_type_tube() {
   RelaxationTube tube;
   tube.turgor = 0.2528e6;
@@ -251,7 +251,8 @@ TEST_CASE("synth: the raw data set reads back as a raw line, its curves fit to t
   // Per curve against its truth: tau_slow within 4 of its own reported standard errors plus
   // 0.5 %; einf within 0.03. The step fit's einf is biased high by the first hold sample
   // falling after the ramp's end (up to one 20 ms sample of the fast phase): +0.005 on average,
-  // measured over the shipped set (README); 0.03 is 5 standard deviations of its scatter.
+  // measured over the shipped set (distributions/README.md); 0.03 is 5 standard deviations of its
+  // scatter.
   std::size_t ok = 0;
   double einf_bias = 0.0;
   for (std::size_t c = 0; c < tau.size(); ++c) {

@@ -1,8 +1,8 @@
 """Predicted against measured growth rate per plant line. Left: paired boxes (measured v_exp
 hatched, predicted v filled; box q1-q3, whiskers 10-90 %). Right: each line's median predicted
 rate against its median measured rate, with 10-90 % bars both ways, against the 1:1 line. kappa
-is calibrated on the reference line (PHYSICS.md section 6), so that line agrees by construction;
-the others are predictions."""
+is calibrated on the reference line (Eq. (G5), src/growth/README.md), so that line agrees by
+construction; the others are predictions."""
 import math
 import textwrap
 

@@ -1,6 +1,6 @@
-"""A campaign's results.h5 (layout: README, section "results.h5") read into plain objects: per
-line the columns with their quantity, unit and role, the sample statuses, the stored analysis and,
-when present, the relaxation curves. Which samples count follows growthuq's summaries: status ok,
+"""A campaign's results.h5 (layout: campaigns/README.md, section "results.h5") read into plain
+objects: per line the columns with their quantity, unit and role, the sample statuses, the stored
+analysis and, when present, the relaxation curves. Which samples count follows growthuq's summaries: status ok,
 and for the growth rate v also no_growth (v = 0 is a valid prediction); the correlogram, like the
 engine's analysis, uses status ok only."""
 import configparser

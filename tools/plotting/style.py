@@ -7,8 +7,8 @@ import matplotlib
 from matplotlib.figure import Figure
 from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
 
-# Quantities that span a decade or more across lines and tubes (PHYSICS.md section 8: eta 10-300
-# MPa s physiologically, E 5-200 MPa): a log axis keeps every line's box readable.
+# Quantities that span a decade or more across lines and tubes (envelope of src/mechanics/README.md:
+# eta 10-300 MPa s physiologically, E 5-200 MPa): a log axis keeps every line's box readable.
 LOG_QUANTITIES = frozenset({"E", "eta"})
 
 LONG_NAMES = {

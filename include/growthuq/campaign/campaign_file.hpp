@@ -1,6 +1,7 @@
 // A campaign: which plant lines to sample, how many samples, which outputs, the instrument,
-// the growth parameters and where results go. Read from an INI file (format in the README),
-// validated completely before any work starts; command-line flags then override some keys.
+// the growth parameters and where results go. Read from an INI file (format in
+// campaigns/README.md), validated completely before any work starts; command-line flags then
+// override some keys.
 //
 // The file is read with the engine's INI reader rather than Boost.Program_options'
 // parse_config_file because every error must name the line it comes from, which
@@ -23,7 +24,7 @@ namespace growthuq {
 enum class CorrelationSource {
   none,     // independent variables
   file,     // a matrix CSV (header row of names, then the matrix)
-  physics,  // derived from the forward thin-shell model (PHYSICS.md section 4)
+  physics,  // derived from the forward thin-shell model (Eq. (M16), src/mechanics/README.md)
 };
 
 // Which model turns measurements into turgor and modulus. Only the thin shell exists today;

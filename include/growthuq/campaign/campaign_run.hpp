@@ -3,8 +3,8 @@
 // its samples are evaluated through the Pool in chunks, and its statistics (summaries, rank
 // correlations, principal components) column by column again; the coordinating process
 // assembles one line at a time (LineResult, LineStatistics) and hands it to an observer, which
-// writes it. kappa is calibrated on the reference line and applied to every line (PHYSICS.md
-// sec. 6).
+// writes it. kappa is calibrated on the reference line and applied to every line (Eq. (G5),
+// src/growth/README.md).
 #pragma once
 
 #include <cstddef>

@@ -40,7 +40,7 @@ struct LineResult {
   std::size_t samples() const { return status.size(); }
 };
 
-// The per-line, per-quantity row of summary.csv (PHYSICS.md: median, IQR, 10-90 %).
+// The per-line, per-quantity row of summary.csv (src/stats/README.md: median, IQR, 10-90 %).
 // Statistics are over samples whose status is ok (for v: ok or no_growth, since a tube that
 // does not grow is a valid prediction of 0); n_flagged counts the others.
 struct QuantitySummary {

@@ -1,7 +1,7 @@
 // What a campaign run will take of the machine, memory and disk, estimated before any sampling,
 // so that a run too large for this machine is refused with one message instead of being
 // killed by the kernel's out-of-memory killer (or filling the disk) part way through. The
-// memory model was measured (README, "Performance": peak resident memory against samples per
+// memory model was measured (tools/bench/README.md: peak resident memory against samples per
 // line for campaigns of 3 to 7 inputs, 1 to 5 outputs, 1 and 5 lines, up to 1.6e7 samples);
 // it errs high, never low, by design.
 #pragma once

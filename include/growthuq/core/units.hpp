@@ -80,8 +80,9 @@ struct Quantity {
   std::string_view description;
 };
 
-// The quantities of PHYSICS.md: measured inputs (k, h, d, d0, tau, einf, v_exp), model outputs
-// (p, E, eta, v) and intermediate ones (lambda, alpha, phi, hoop_stress, wall_stiffness).
+// The quantities of the models (src/<concept>/README.md): measured inputs (k, h, d, d0, tau, einf,
+// v_exp), model outputs (p, E, eta, v) and intermediate ones (lambda, alpha, phi, hoop_stress,
+// wall_stiffness).
 std::span<const Quantity> known_quantities();
 
 // The quantity called `name`, or nullptr.

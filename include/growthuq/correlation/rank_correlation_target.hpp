@@ -1,6 +1,6 @@
 // A Spearman rank-correlation target as Iman-Conover needs it: validated, converted to the
 // correlation of normal scores, and repaired to the nearest correlation matrix when that is not
-// positive definite (PHYSICS.md section 2).
+// positive definite (Eqs. (C1), (C4), src/correlation/README.md).
 #pragma once
 
 #include <string>

@@ -1,6 +1,6 @@
 // Maximum-likelihood fits of the parametric families to raw per-tube measurements, with the
-// numbers a user needs to choose among them (PHYSICS.md section 1): log-likelihood, AIC and
-// the Kolmogorov-Smirnov and Anderson-Darling statistics of the fitted law.
+// numbers a user needs to choose among them (Eqs. (D5)-(D8), src/distributions/README.md):
+// log-likelihood, AIC and the Kolmogorov-Smirnov and Anderson-Darling statistics of the fitted law.
 #pragma once
 
 #include <cstddef>

@@ -1,6 +1,6 @@
 // A plant line's distribution file (distributions/<line>.ini): one section per measured
-// variable with its law, parameters, unit and source. The format is documented in the README
-// and validated strictly; every error names the file and line.
+// variable with its law, parameters, unit and source. The format is documented in
+// distributions/README.md and validated strictly; every error names the file and line.
 #pragma once
 
 #include <string>

@@ -1,5 +1,6 @@
 // The lognormal law: ln X ~ Normal(mu, sigma). Stiffness and diameters of pollen tubes are
-// right-skewed and published as median and IQR (PHYSICS.md section 1), hence from_median_iqr.
+// right-skewed and published as median and IQR (Eq. (D1), src/distributions/README.md), hence
+// from_median_iqr.
 #pragma once
 
 namespace growthuq {
@@ -10,7 +11,7 @@ class Lognormal {
   Lognormal(double mu, double sigma);
 
   // The lognormal with median m and interquartile range r: mu = ln m, and r = m (e^{z sigma} -
-  // e^{-z sigma}) with z = Phi^-1(0.75) gives sigma = asinh(r / (2 m)) / z (PHYSICS.md eq. 1.1).
+  // e^{-z sigma}) with z = Phi^-1(0.75) gives sigma = asinh(r / (2 m)) / z (Eq. (D1)).
   static Lognormal from_median_iqr(double median, double iqr);
 
   double mu() const { return mu_; }

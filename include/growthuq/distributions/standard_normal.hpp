@@ -1,7 +1,7 @@
 // The standard normal quantile Phi^-1(u), used by every normal-based law and for the van der
-// Waerden scores of Iman-Conover (PHYSICS.md section 2). Accurate at both tails: for u in
-// (0, 1) the result is finite (|x| <= 38.5 for u >= DBL_TRUE_MIN's neighbourhood), u = 0 and
-// u = 1 give -inf and +inf; u outside [0, 1] or NaN is an InputError.
+// Waerden scores of Iman-Conover (Eq. (C2), src/correlation/README.md). Accurate at both
+// tails: for u in (0, 1) the result is finite (|x| <= 38.5 for u >= DBL_TRUE_MIN's
+// neighbourhood), u = 0 and u = 1 give -inf and +inf; u outside [0, 1] or NaN is an InputError.
 #pragma once
 
 #include <span>

@@ -1,5 +1,5 @@
 // Steady tip growth rate of a pollen tube from turgor, diameter, wall viscosity and
-// thickness: Lockhart's yield-flow law on a hemispherical tip (PHYSICS.md section 6),
+// thickness: Lockhart's yield-flow law on a hemispherical tip (Eq. (G4), src/growth/README.md),
 //   v = kappa (p - p0) d^2 / (4 eta h).
 #pragma once
 

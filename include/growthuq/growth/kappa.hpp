@@ -1,5 +1,6 @@
-// Calibration of the growth law's geometric factor kappa on one reference line (PHYSICS.md
-// section 6): kappa = (experimental median growth rate) / (predicted median with kappa = 1).
+// Calibration of the growth law's geometric factor kappa on one reference line (Eq. (G5),
+// src/growth/README.md):
+//   kappa = (experimental median growth rate) / (predicted median with kappa = 1).
 // Every line of the campaign then uses this one kappa, so the other lines' rates are
 // predictions, not fits.
 #pragma once

@@ -1,5 +1,5 @@
 // Wall viscosity from the per-line relaxation distributions, for campaigns without raw
-// force-relaxation curves (PHYSICS.md section 5, last bullet): eta = tau (1 - e_inf) E.
+// force-relaxation curves (Eq. (G1), src/growth/README.md): eta = tau (1 - e_inf) E.
 #pragma once
 
 #include <string>
@@ -13,7 +13,7 @@ namespace growthuq {
 // eta = tau (1 - e_inf) E [Pa s] for one sample (SI: tau in s, e_inf = E_inf/E_r(0) as a
 // fraction, E in Pa). The slow Maxwell branch relaxes the share 1 - e_inf of the modulus with
 // time constant tau, so its viscosity is tau times that share of E (generalized Maxwell model,
-// PHYSICS.md section 5: eta = tau E0 with E0 = (1 - e_inf) E). No validation: see the evaluator.
+// Eq. (R7): eta = tau E0 with E0 = (1 - e_inf) E). No validation: see the evaluator.
 inline double relaxation_viscosity(double tau, double einf, double modulus) noexcept {
   return tau * (1.0 - einf) * modulus;
 }

@@ -1,5 +1,5 @@
 // The Arnoldi factor phi(x) = x K1(x) / K0(x) of the apparent stiffness of a pressurized
-// cylinder under a probe (Arnoldi et al. 2000; PHYSICS.md section 3, relation 2), and its
+// cylinder under a probe (Arnoldi et al. 2000; Eqs. (M2), (M4), src/mechanics/README.md), and its
 // inverse. Both are accurate to a few ulp over all positive doubles and never throw.
 #pragma once
 

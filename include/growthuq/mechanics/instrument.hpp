@@ -15,10 +15,11 @@ struct Instrument {
   // the answer (p falls ~2x from rho = 0.25 to 1 um), so it has no default; NaN means "not
   // given" (the relaxation commands then read it per curve from the tube sheet).
   double probe_radius_m = std::numeric_limits<double>::quiet_NaN();
-  // Poisson ratio nu of the wall, in [0, 0.5): an isotropic elastic wall has nu <= 0.5
-  // (incompressible at 0.5, where the thin-shell constitutive law degenerates) and a plant cell
-  // wall is not auxetic; the thin-shell closed form needs 1 - nu^2 > 0, which the range keeps.
-  // 0.2 as in the published FEM (Burri et al. 2019).
+  // Poisson ratio nu of the wall, in [0, 0.5): an isotropic elastic solid has -1 < nu <= 0.5,
+  // 0.5 being incompressible (bulk modulus E / (3 (1 - 2 nu)) infinite), and a plant cell wall
+  // is neither auxetic (nu < 0) nor incompressible; the decay length (Eq. M3,
+  // src/mechanics/README.md) needs 1 - nu^2 > 0, which the range keeps. 0.2 by default, the
+  // value of the finite-element model of the published study (distributions/README.md).
   double poisson_ratio = 0.2;
   // Sensor stiffness k_sys [N/m] in series with the tube, > 0; +inf (an ideal sensor, no
   // series correction) by default and allowed.

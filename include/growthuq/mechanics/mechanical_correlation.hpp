@@ -1,7 +1,7 @@
 // A rank correlation of the measurements (k, h, d, d0) that comes from the mechanics rather
-// than a guess (PHYSICS.md section 4): draw physically plausible (p, E, h, d0), run the forward
-// thin-shell model, drop tubes that burst, and take the Spearman matrix. `growthuq correlate`
-// writes it for `growthuq sample --rank-correlation`.
+// than a guess (Eq. (M16), src/mechanics/README.md): draw physically plausible (p, E, h, d0), run
+// the forward thin-shell model, drop tubes that burst, and take the Spearman matrix. `growthuq
+// correlate` writes it for `growthuq sample --rank-correlation`.
 #pragma once
 
 #include <array>
@@ -27,8 +27,9 @@ struct DrawRange {
 enum class DrawScale { uniform, log_uniform };
 
 struct MechanicalDrawOptions {
-  // Physiological defaults (PHYSICS.md sections 7 and 8): turgor 0.1-0.8 MPa, modulus 5-200 MPa,
-  // thickness 100-300 nm (published medians 145-199 nm), plasmolysed diameter 4-8 um.
+  // Physiological defaults (envelope of src/mechanics/README.md): turgor 0.1-0.8 MPa,
+  // modulus 5-200 MPa, thickness 100-300 nm (published medians 145-199 nm), plasmolysed
+  // diameter 4-8 um.
   DrawRange p{0.1e6, 0.8e6};
   DrawRange E{5e6, 200e6};
   DrawRange h{100e-9, 300e-9};

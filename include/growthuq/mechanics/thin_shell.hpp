@@ -1,7 +1,8 @@
-// The fast thin-shell model of a pressurized pollen tube (PHYSICS.md section 3): hoop
-// equilibrium with logarithmic strain (Vogler et al. 2013) plus the apparent stiffness under a
-// probe (Arnoldi et al. 2000). Closed-form inverse (k, d, d0 [, h] -> p [, E]) and the forward
-// model (p, E, h, d0 -> d, k). Per-sample functions, SI units, a status instead of NaN.
+// The fast thin-shell model of a pressurized pollen tube (Eqs. (M1)-(M10),
+// src/mechanics/README.md): hoop equilibrium with logarithmic strain (Vogler et al. 2013) plus the
+// apparent stiffness under a probe (Arnoldi et al. 2000). Closed-form inverse (k, d, d0 [, h] -> p
+// [, E]) and the forward model (p, E, h, d0 -> d, k). Per-sample functions, SI units, a status
+// instead of NaN.
 #pragma once
 
 #include "growthuq/evaluation/sample_status.hpp"

@@ -1,8 +1,8 @@
 // A plant line's raw data file (raw.ini): where a lab's per-tube measurement tables and
 // force-relaxation curves are and what their columns hold, so that the line's distributions
 // can be fitted from them (raw_line_fit.hpp) instead of being typed in as medians and IQRs.
-// Validated as strictly as line files; the format is documented in the README ("From your
-// lab's data").
+// Validated as strictly as line files; the format is documented in distributions/README.md
+// ("Raw data: what a lab provides").
 //
 //   [line]                      name = wild_type, description = ... (optional)
 //   [measurement VARIABLE]      one per variable measured tube by tube (k, h, d, d0, v_exp; tau

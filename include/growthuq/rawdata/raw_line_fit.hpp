@@ -1,8 +1,8 @@
 // From a lab's raw data (raw_line_file.hpp) to a plant line's distributions: every variable
 // measured tube by tube is fitted by maximum likelihood with each candidate family and the
-// family of least AIC is kept (PHYSICS.md section 1); tau and einf come from fitting the
-// force-relaxation curves one by one (relaxation/analysis.hpp) and then fitting their
-// distributions the same way. Every fit is kept for the report: families that failed, curves
+// family of least AIC is kept (Eqs. (D5), (D6), src/distributions/README.md); tau and einf come
+// from fitting the force-relaxation curves one by one (relaxation/analysis.hpp) and then fitting
+// their distributions the same way. Every fit is kept for the report: families that failed, curves
 // whose fit failed (with the reason), the data themselves.
 #pragma once
 

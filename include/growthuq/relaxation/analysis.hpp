@@ -1,6 +1,6 @@
 // From one measured force-relaxation curve to the wall's relaxation parameters: locate the
 // hold, map k(t) = F(t) / delta to E_r(t), fit the Prony series (step or ramp-aware) and
-// derive E0 and the viscosity eta = tau_slow E0 (PHYSICS.md section 5).
+// derive E0 and the viscosity eta = tau_slow E0 (Eqs. (R1)-(R7), src/relaxation/README.md).
 #pragma once
 
 #include <string>

@@ -1,7 +1,8 @@
 // Force-relaxation curves as a lab exports them. Forces: a long-format CSV, one row per
 // sample, `curve,t_s,F_uN`. Metadata per curve (`curve,delta_um,p_MPa,d_um,h_nm[,rho_um]`):
 // either a second CSV with one row per curve (--meta; the tube sheet a lab already keeps), or
-// the same columns in the force file, repeated on every row of a curve. Format in the README.
+// the same columns in the force file, repeated on every row of a curve. Format in
+// distributions/README.md.
 #pragma once
 
 #include <optional>

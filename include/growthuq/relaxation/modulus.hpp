@@ -1,5 +1,6 @@
-// Apparent relaxation modulus of the wall from the probe's stiffness (PHYSICS.md section 5):
-// Arnoldi et al. (2000) relation k = (3 pi / 4) p d phi(rho / alpha) inverted at fixed p, d.
+// Apparent relaxation modulus of the wall from the probe's stiffness (Eq. (R2),
+// src/relaxation/README.md): Arnoldi et al. (2000) relation k = (3 pi / 4) p d phi(rho / alpha)
+// inverted at fixed p, d.
 #pragma once
 
 #include "growthuq/mechanics/instrument.hpp"

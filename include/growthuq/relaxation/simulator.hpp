@@ -1,5 +1,5 @@
-// A simulated stress-relaxation experiment (PHYSICS.md section 5): the probe indents at a
-// constant rate until the force reaches the set point, then holds its position. The tube under
+// A simulated stress-relaxation experiment (Eq. (R8), src/relaxation/README.md): the probe indents
+// at a constant rate until the force reaches the set point, then holds its position. The tube under
 // the probe is a generalized Maxwell spring, integrated as an ODE with SUNDIALS CVODE.
 #pragma once
 

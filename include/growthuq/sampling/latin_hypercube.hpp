@@ -27,9 +27,10 @@ struct LatinColumn {
 double stratum_edge(std::size_t k, std::size_t n) noexcept;
 
 // The column for n >= 1 samples (n < 2^32) from RandomStream(key) (see random_stream.hpp):
-// first the permutation: 0, 1, ..., n-1 shuffled by Fisher-Yates from the last position down
-// (i = n-1 .. 1: swap i with j uniform in [0, i], by Lemire's method on 32-bit words, each
-// 64-bit draw giving its high then its low half) gives sigma, and stratum k goes to sample
+// first the permutation: 0, 1, ..., n-1 shuffled by the inside-out Fisher-Yates shuffle
+// (i = 1 .. n-1: j uniform in [0, i] by Lemire's method on 32-bit words, each 64-bit draw
+// giving its high then its low half; a[i] = a[j], a[j] = i; Eq. (S4), src/sampling/README.md)
+// gives sigma, and stratum k goes to sample
 // sigma[k] (stratum[sigma[k]] = k); then, for StratumPosition::random, one open uniform U_k
 // per stratum from fresh 64-bit draws, in increasing k, u_k = (k + U_k)/n (kept inside its
 // stratum and inside (0,1) against rounding). Handing strata to samples (rather than samples

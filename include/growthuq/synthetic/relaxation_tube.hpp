@@ -1,18 +1,18 @@
 // One synthetic stress-relaxation experiment with a known truth: a tube whose wall relaxes as
 // E_r(t) / E_r(0) = e_inf + (1 - e_inf) [s exp(-t / tau_fast) + (1 - s) exp(-t / tau_slow)]
-// (the two phases of PHYSICS.md section 5; s is the fast share of the relaxing part), indented
-// by the ramp-and-hold protocol of the experiment simulator (relaxation/simulator.hpp).
+// (the two phases of Eq. (R4), src/relaxation/README.md; s is the fast share of the relaxing part),
+// indented by the ramp-and-hold protocol of the experiment simulator (relaxation/simulator.hpp).
 //
 // The probe sees the stiffness k(t) = k(E_r(t)) of the forward Arnoldi relation at the tube's p,
 // d, h and rho (relaxation_stiffness). The simulator needs a generalized Maxwell contact with
 // positive springs, and k(E_r(t)) is not completely monotone, so no positive series matches it
 // exactly: the best one (NNLS over 40 log-spaced times) is off by about 5e-4 k(0), enough to
-// bias a fitted tau_slow by up to 4 % (measured; README). So the ramp and hold come from the
-// simulator with that series, and the hold is then corrected by delta [k(E_r(t - t_r)) -
-// k_series(t - t_r)], t_r the end of the ramp: the hold is the exact step response plus the
-// memory of the ramp the simulator computed, and an instantaneous ramp gives F = delta
-// k(E_r(t)) exactly. Noise: Gaussian, relative to the set point, from GaussianNoise(seed) as
-// in the simulator; forces are clipped at 0 (a zeroed sensor does not report negative force).
+// bias a fitted tau_slow by up to 4 % (measured; distributions/README.md). So the ramp and hold
+// come from the simulator with that series, and the hold is then corrected by delta [k(E_r(t -
+// t_r)) - k_series(t - t_r)], t_r the end of the ramp: the hold is the exact step response plus the
+// memory of the ramp the simulator computed, and an instantaneous ramp gives F = delta k(E_r(t))
+// exactly. Noise: Gaussian, relative to the set point, from GaussianNoise(seed) as in the
+// simulator; forces are clipped at 0 (a zeroed sensor does not report negative force).
 #pragma once
 
 #include <cstdint>

@@ -1,6 +1,7 @@
 // `growthuq synth`: a realistic raw data set of one plant line drawn from stated TRUE
-// distributions (a line file) and a seed, in the files a lab would hand over (README "From your
-// lab's data"), so the raw-data path can be run and tested end to end against a known truth.
+// distributions (a line file) and a seed, in the files a lab would hand over
+// (distributions/README.md, "Raw data"), so the raw-data path can be run and tested end to end
+// against a known truth.
 //
 // As in the lab, each quantity is measured on its own tubes:
 //   indentation.csv    tube,k_N_per_m,d_um      CFM stiffness and turgid diameter of indented tubes
@@ -52,7 +53,8 @@ struct SynthSettings {
   Instrument instrument{from_um(0.5), 0.2};
   // 100 um/s to 5 uN (a ramp of ~17 ms on a wild-type tube), a 30 s hold (tau_slow reaches
   // ~17 s at the wild type's 99th percentile; a fit needs the record to outlast it), exported
-  // at 50 Hz: 1500 samples, which determine tau_slow to ~0.5-1 % at 0.2 % noise (README).
+  // at 50 Hz: 1500 samples, which determine tau_slow to ~0.5-1 % at 0.2 % noise
+  // (distributions/README.md).
   RampHoldProtocol protocol{100e-6, 5e-6, 30.0, 0.02};
   double force_noise = 0.002;  // standard deviation relative to the set point (10 nN at 5 uN)
 };

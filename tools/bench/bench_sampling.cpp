@@ -1,8 +1,8 @@
 // Benchmark (not a test): a correlated Latin hypercube design of 4 lognormal variables (the
-// wild type's k, h, d, d0 of PHYSICS.md section 7) with a 4x4 Spearman target: LHS, quantile
+// wild type's k, h, d, d0 of distributions/README.md) with a 4x4 Spearman target: LHS, quantile
 // transform and Iman-Conover, single thread. Prints the median time over repetitions, each
-// step's share, and the largest |achieved - target| Spearman error. tools/bench-sampling runs it
-// side by side with tools/peer_sampling.py, which does the same steps with numpy/scipy.
+// step's share, and the largest |achieved - target| Spearman error. tools/bench/bench-sampling runs
+// it side by side with tools/bench/peer_sampling.py, which does the same steps with numpy/scipy.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -61,7 +61,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 int main(int argc, char** argv) try {
   const Options options = parse(argc, argv);
-  // Same target in tools/peer_sampling.py.
+  // Same target in tools/bench/peer_sampling.py.
   const std::vector<std::string> names{"k", "h", "d", "d0"};
   const std::vector<DesignVariable> variables{{"k", Lognormal::from_median_iqr(2.87, 0.83)},
                                               {"h", Lognormal::from_median_iqr(145, 31)},

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Peer of tools/bench_sampling.cpp in vectorized numpy/scipy, for a side-by-side timing.
+"""Peer of tools/bench/bench_sampling.cpp in vectorized numpy/scipy, for a side-by-side timing.
 
 The same steps, with the same shortcuts: per variable a random permutation (the strata) and one
 uniform per stratum, the lognormal quantile exp(mu + sigma ndtri(u)) evaluated per stratum and
@@ -19,7 +19,8 @@ Z75 = ndtri(0.75)
 
 
 def lognormal(median, iqr):
-    """mu, sigma of the lognormal with this median and IQR (PHYSICS.md section 1)."""
+    """mu, sigma of the lognormal with this median and IQR (Eq. (D1),
+    src/distributions/README.md)."""
     return np.log(median), np.arcsinh(iqr / (2 * median)) / Z75
 
 

@@ -3,7 +3,7 @@
 // --chunk-size samples, values = outputs + status per sample, as the sink receives them),
 // then scans it (what --resume does first), reads every chunk back (the replay), and removes
 // it (what a completed run does). Prints each step's time, best of --repeats, and the log's
-// size. Compare the total with the run's own time (tools/bench-checkpoint runs both).
+// size. Compare the total with the run's own time (tools/bench/bench-checkpoint runs both).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

@@ -1,4 +1,4 @@
-// What the benchmark programs in tools/ time with: the calling thread's CPU seconds and the
+// What the benchmark programs in tools/bench/ time with: the calling thread's CPU seconds and the
 // median of repetitions.
 #pragma once
 

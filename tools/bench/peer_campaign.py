@@ -2,7 +2,7 @@
 """numpy/scipy peer of `growthuq run CAMPAIGN --formats hdf5`, for a side-by-side timing.
 
 The same campaign, step for step, written as a competent vectorized numpy/scipy program
-(tools/bench-campaign runs both and compares them):
+(tools/bench/bench-campaign runs both and compares them):
 
   design      per line: the `physics` rank correlation (uniform (p, E, h, d0) draws, forward
               thin-shell model with scipy's Lambert W, Spearman of (k, h, d, d0) over the tubes
@@ -28,7 +28,7 @@ Random numbers come from numpy's default Generator (PCG64) seeded from the campa
 the line name, so results agree with the engine statistically, not bit for bit. Run it single
 threaded (OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1). Per-phase wall times go to stderr.
 
-  /usr/bin/python3 tools/peer_campaign.py --campaign campaigns/arabidopsis_2022.ini \
+  /usr/bin/python3 tools/bench/peer_campaign.py --campaign campaigns/arabidopsis_2022.ini \
       --samples 1000000 --out /tmp/peer_run
 """
 import argparse
@@ -234,7 +234,7 @@ class Line:
 
 
 # ---------------------------------------------------------------------------------------------
-# Mechanics (PHYSICS.md sections 3 and 4)
+# Mechanics (Eqs. (M1)-(M16), src/mechanics/README.md)
 
 def arnoldi_phi(x):
     """phi(x) = x K1(x)/K0(x): scaled Bessel functions, series below 1e-5, Hankel above 1e3."""
@@ -257,7 +257,7 @@ MASK64 = 0xffffffffffffffff
 
 
 def mix64(x):
-    """The SplitMix64 finalizer (README, Random numbers)."""
+    """The SplitMix64 finalizer (Eq. (S3), src/sampling/README.md)."""
     x = (x + 0x9e3779b97f4a7c15) & MASK64
     x = ((x ^ (x >> 30)) * 0xbf58476d1ce4e5b9) & MASK64
     x = ((x ^ (x >> 27)) * 0x94d049bb133111eb) & MASK64
@@ -395,7 +395,7 @@ def evaluate(line, campaign, si):
 
 
 # ---------------------------------------------------------------------------------------------
-# Sampling (PHYSICS.md section 2)
+# Sampling (src/sampling/README.md and src/correlation/README.md)
 
 def nearest_correlation(a, floor=1e-6, tolerance=1e-12, iterations=1000):
     """Higham (2002) alternating projections with Dykstra's correction, eigenvalues >= floor."""

@@ -1,7 +1,7 @@
 // Benchmark (not a test): the fast per-sample chain of a campaign, thin-shell turgor and
 // modulus, viscosity from relaxation distributions, and growth rate, on one SampleBlock of
 // physiological random tubes (default 1e7), single thread. Prints samples per second per
-// evaluator and for the chain; tools/bench-evaluators builds and runs it. --block-size B
+// evaluator and for the chain; tools/bench/bench-evaluators builds and runs it. --block-size B
 // instead runs the chain block by block (B samples each), as a Monte Carlo driver would.
 #include <algorithm>
 #include <chrono>
@@ -54,13 +54,14 @@ Options parse(int argc, char** argv) {
   return options;
 }
 
-// Lognormal from a published median and IQR (PHYSICS.md section 1): sigma = asinh(r/(2m))/z.
+// Lognormal from a published median and IQR (Eq. (D1), src/distributions/README.md):
+// sigma = asinh(r/(2m))/z.
 std::lognormal_distribution<double> lognormal(double median, double iqr) {
   const double z = 0.6744897501960817;
   return std::lognormal_distribution<double>(std::log(median), std::asinh(iqr / (2 * median)) / z);
 }
 
-// Wild-type-like tubes (PHYSICS.md section 7), SI, as one block of `size` samples drawn from
+// Wild-type-like tubes (distributions/README.md), SI, as one block of `size` samples drawn from
 // `engine`. d = lambda d0 with lambda uniform in the physiological 1.02-1.4, so the thin-shell
 // inverse is defined; einf normal (IQR 18.2 %) restricted to [0.05, 0.95].
 SampleBlock physiological_tubes(std::mt19937_64& engine, std::size_t size) {
@@ -113,7 +114,7 @@ int main(int argc, char** argv) try {
   std::printf("%zu block(s) of up to %zu samples\n", blocks.size(), block_size);
 
   Instrument shell;
-  shell.probe_radius_m = 0.5e-6;  // a typical CFM probe (PHYSICS.md section 8: 0.1-2 um)
+  shell.probe_radius_m = 0.5e-6;  // a typical CFM probe (src/mechanics/README.md: 0.1-2 um)
   const ThinShellTurgor turgor(shell, "bench_evaluators");
   const ThinShellModulus modulus;
   const ViscosityEvaluator viscosity;
