@@ -135,25 +135,22 @@ void read_campaign_section(const IniDocument& document, const IniSection& sectio
 
 void read_instrument_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
   SectionReader reader(document, section);
+  // The same parser, ranges and messages as the commands' --rho-um, --nu and --k-sys.
+  const auto entry = [&reader](const IniEntry* found, std::string key) {
+    return found ? InstrumentEntry{found->value, reader.location(*found), found->key}
+                 : InstrumentEntry{std::nullopt, "", std::move(key)};
+  };
   const IniEntry& rho = reader.required("probe_radius_um");
-  campaign.instrument.probe_radius = reader.number(rho, 1e-3, 1e3, "a probe radius in um, in (0, 1000]") * 1e-6;
-  if (!(campaign.instrument.probe_radius > 0.0)) throw_bad_value(reader.location(rho), rho.key, rho.value, "a positive radius in um");
-  if (const IniEntry* nu = reader.optional("poisson_ratio")) {
-    campaign.instrument.poisson_ratio = reader.number(*nu, 0.0, std::nextafter(1.0, 0.0), "a Poisson ratio in [0, 1)");
-  }
-  if (const IniEntry* k_sys = reader.optional("sensor_stiffness_N_per_m")) {
-    campaign.instrument.sensor_stiffness =
-        k_sys->value == "inf" ? std::numeric_limits<double>::infinity()
-                              : reader.number(*k_sys, 1e-12, 1e12, "a stiffness in N/m > 0, or inf");
-  }
+  campaign.instrument = parse_instrument({entry(&rho, "probe_radius_um"), entry(reader.optional("poisson_ratio"), "poisson_ratio"),
+                                          entry(reader.optional("sensor_stiffness_N_per_m"), "sensor_stiffness_N_per_m")},
+                                         ProbeRadius::required);
   reader.reject_unknown_keys("probe_radius_um, poisson_ratio, sensor_stiffness_N_per_m");
-  validate(campaign.instrument, reader.location(rho));
 }
 
 void read_growth_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
   SectionReader reader(document, section);
   if (const IniEntry* p0 = reader.optional("yield_pressure_MPa")) {
-    campaign.yield_pressure = reader.number(*p0, 0.0, 100.0, "a yield pressure in MPa in [0, 100]") * 1e6;
+    campaign.yield_pressure = from_MPa(reader.number(*p0, 0.0, 100.0, "a yield pressure in MPa in [0, 100]"));
   }
   if (const IniEntry* reference = reader.optional("reference_line")) campaign.reference_line = reference->value;
   reader.reject_unknown_keys("yield_pressure_MPa, reference_line");
@@ -162,10 +159,10 @@ void read_growth_section(const IniDocument& document, const IniSection& section,
 void read_physics_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
   SectionReader reader(document, section);
   MechanicalDrawOptions& draw = campaign.physics_correlation;
-  if (const IniEntry* p = reader.optional("p_MPa")) draw.p = parse_range(reader, *p, 1e6);
-  if (const IniEntry* E = reader.optional("E_MPa")) draw.E = parse_range(reader, *E, 1e6);
-  if (const IniEntry* h = reader.optional("h_nm")) draw.h = parse_range(reader, *h, 1e-9);
-  if (const IniEntry* d0 = reader.optional("d0_um")) draw.d0 = parse_range(reader, *d0, 1e-6);
+  if (const IniEntry* p = reader.optional("p_MPa")) draw.p = parse_range(reader, *p, unit_factor::MPa);
+  if (const IniEntry* E = reader.optional("E_MPa")) draw.E = parse_range(reader, *E, unit_factor::MPa);
+  if (const IniEntry* h = reader.optional("h_nm")) draw.h = parse_range(reader, *h, unit_factor::nm);
+  if (const IniEntry* d0 = reader.optional("d0_um")) draw.d0 = parse_range(reader, *d0, unit_factor::um);
   if (const IniEntry* scale = reader.optional("scale")) {
     if (scale->value == "uniform") {
       draw.scale = DrawScale::uniform;

@@ -21,6 +21,7 @@
 #include "campaign/raw_data_outputs.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/core/units.hpp"
 #include "growthuq/io/results_h5.hpp"
 #include "growthuq/stats/line_analysis.hpp"
 
@@ -174,7 +175,7 @@ class OutputObserver final : public RunObserver {
     if (outcome.run.calibrated) {
       report << "\nkappa = " << format_double(outcome.run.kappa) << " (calibrated on " << c.reference_line
              << ": its predicted median v equals the median of its v_exp, "
-             << format_significant(campaign_.experimental_median_growth_rate() * 1e6) << " um/s)\n";
+             << format_significant(to_um_per_s(campaign_.experimental_median_growth_rate())) << " um/s)\n";
     }
     report << line_reports_ << raw_data_report;
   }

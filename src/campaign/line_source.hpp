@@ -15,7 +15,7 @@ namespace growthuq {
 // The line's distributions; `raw_fit` is set to the fits when the line has raw data and reset
 // otherwise. InputError naming the file for any problem (line_file.hpp, raw_line_fit.hpp).
 // `fit_curves` (optional) fits the relaxation curves (RawFitSettings::fit_curves).
-LineDistributions load_line_distributions(const CampaignLine& line, const ThinShellParameters& instrument,
+LineDistributions load_line_distributions(const CampaignLine& line, const Instrument& instrument,
                                           std::shared_ptr<const RawLineFit>& raw_fit, const CurveFitter& fit_curves = {});
 
 }  // namespace growthuq

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/core/units.hpp"
 #include "growthuq/io/csv.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "growthuq/rawdata/raw_line_fit.hpp"
@@ -89,25 +90,25 @@ void write_relaxation(ResultsH5Writer& h5, const std::string& line, const RawLin
     table[5].real.push_back(value(fitted_ok && terms == 3, f.tau.size() == 3 ? f.tau[1] : nan));
     table[6].real.push_back(value(fitted_ok, f.tau.empty() ? nan : f.tau.back()));
     table[7].real.push_back(value(fitted_ok, f.einf));
-    table[8].real.push_back(value(fitted_ok, f.slow_modulus * 1e-6));
-    table[9].real.push_back(value(fitted_ok, f.viscosity * 1e-6));
-    table[10].real.push_back(value(fitted_ok, f.modulus0 * 1e-6));
-    table[11].real.push_back(value(fitted_ok, f.tau_slow_relative_se * 100.0));
+    table[8].real.push_back(value(fitted_ok, to_MPa(f.slow_modulus)));
+    table[9].real.push_back(value(fitted_ok, to_MPa_s(f.viscosity)));
+    table[10].real.push_back(value(fitted_ok, to_MPa(f.modulus0)));
+    table[11].real.push_back(value(fitted_ok, to_pct(f.tau_slow_relative_se)));
     table[12].real.push_back(value(f.points > 0, f.rms));
     table[13].real.push_back(value(f.points > 0, f.aic));
     table[14].real.push_back(f.ramp_time);
     table[15].integer.push_back(static_cast<std::int64_t>(f.points));
-    table[16].real.push_back(curve.indentation * 1e6);
-    table[17].real.push_back(curve.turgor * 1e-6);
-    table[18].real.push_back(curve.diameter * 1e6);
-    table[19].real.push_back(curve.thickness * 1e9);
-    table[20].real.push_back(curve.probe_radius * 1e6);
-    const std::vector<double> model = fitted_force(curve, f, relaxation.options.poisson);
+    table[16].real.push_back(to_um(curve.indentation));
+    table[17].real.push_back(to_MPa(curve.turgor));
+    table[18].real.push_back(to_um(curve.diameter));
+    table[19].real.push_back(to_nm(curve.thickness));
+    table[20].real.push_back(to_um(curve.probe_radius_m));
+    const std::vector<double> model = fitted_force(curve, f, relaxation.options.poisson_ratio);
     for (std::size_t i = 0; i < curve.t.size(); ++i) {
       curve_index.push_back(static_cast<std::int32_t>(c));
       t.real.push_back(curve.t[i]);
-      force.real.push_back(curve.force[i] * 1e6);
-      fitted.real.push_back(model[i] * 1e6);
+      force.real.push_back(to_uN(curve.force[i]));
+      fitted.real.push_back(to_uN(model[i]));
     }
   }
   const std::string group = "lines/" + line + "/relaxation";

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -11,8 +12,10 @@
 #include "commands.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/core/units.hpp"
 #include "growthuq/correlation/matrix_file.hpp"
 #include "growthuq/io/output_file.hpp"
+#include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/mechanics/mechanical_correlation.hpp"
 #include "options.hpp"
 
@@ -146,10 +149,10 @@ int run_correlate(const Arguments& arguments) {
   const Origins origins(from_command_line, options.config);
 
   MechanicalDrawOptions draws;
-  draws.p = parse_range(options.p_MPa, origins, "p-MPa", 1e6);
-  draws.E = parse_range(options.E_MPa, origins, "E-MPa", 1e6);
-  draws.h = parse_range(options.h_nm, origins, "h-nm", 1e-9);
-  draws.d0 = parse_range(options.d0_um, origins, "d0-um", 1e-6);
+  draws.p = parse_range(options.p_MPa, origins, "p-MPa", unit_factor::MPa);
+  draws.E = parse_range(options.E_MPa, origins, "E-MPa", unit_factor::MPa);
+  draws.h = parse_range(options.h_nm, origins, "h-nm", unit_factor::nm);
+  draws.d0 = parse_range(options.d0_um, origins, "d0-um", unit_factor::um);
   if (options.scale == "uniform") {
     draws.scale = DrawScale::uniform;
   } else if (options.scale == "log") {
@@ -160,18 +163,14 @@ int run_correlate(const Arguments& arguments) {
   draws.samples = parse_count(options.samples, origins.location("samples"), origins.label("samples"), 3, 100000000);
   draws.seed = parse_count(options.seed, origins.location("seed"), origins.label("seed"));
 
-  ThinShellParameters shell;
-  if (options.rho_um.empty()) {
-    throw InputError(std::string(command), "--rho-um is required (the probe radius; no default)");
-  }
-  shell.probe_radius = parse_double(options.rho_um, origins.location("rho-um"), origins.label("rho-um")) * 1e-6;
-  if (!(shell.probe_radius > 0)) {
-    throw_bad_value(origins.location("rho-um"), origins.label("rho-um"), options.rho_um, "a positive probe radius in um");
-  }
-  shell.poisson_ratio = parse_double(options.nu, origins.location("nu"), origins.label("nu"));
-  if (!(shell.poisson_ratio > -1 && shell.poisson_ratio < 1)) {
-    throw_bad_value(origins.location("nu"), origins.label("nu"), options.nu, "a Poisson ratio in (-1, 1)");
-  }
+  // The instrument through the parser every command and the campaign file use, each setting
+  // located where it was written (flag or config line).
+  const auto entry = [&origins](const std::string& text, const std::string& key) {
+    return InstrumentEntry{text.empty() ? std::nullopt : std::optional<std::string>(text), origins.location(key),
+                           origins.label(key)};
+  };
+  const Instrument shell = parse_instrument({entry(options.rho_um, "rho-um"), entry(options.nu, "nu"), {}},
+                                            ProbeRadius::required);
   const Overwrite overwrite = options.force ? Overwrite::allow : Overwrite::refuse;
   if (!options.out.empty()) check_can_write(options.out, overwrite);
 

@@ -3,6 +3,7 @@
 // named as `growthuq sample` writes them (k_N_per_m, h_nm, d_um, d0_um; h optional) written
 // back with the outputs and a status column appended.
 #include <array>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -58,27 +59,10 @@ constexpr std::array outputs{
 
 const Unit& unit_of(std::string_view symbol) { return find_unit(symbol, command, "unit"); }
 
-// The instrument from the flags, each checked with the flag name and the text typed (the
-// evaluators validate again, as an invariant of the library).
-ThinShellParameters instrument(const EvalOptions& options) {
-  ThinShellParameters parameters;
-  if (options.rho_um.empty()) {
-    throw InputError(std::string(command), "--rho-um is required: the probe radius dominates the turgor "
-                                           "(p falls ~2x from 0.25 to 1 um) and has no default");
-  }
-  parameters.probe_radius = parse_double(options.rho_um, command, "--rho-um") * 1e-6;
-  if (!(parameters.probe_radius > 0)) throw_bad_value(command, "--rho-um", options.rho_um, "a positive probe radius in um");
-  parameters.poisson_ratio = parse_double(options.nu, command, "--nu");
-  if (!(parameters.poisson_ratio > -1 && parameters.poisson_ratio < 1)) {
-    throw_bad_value(command, "--nu", options.nu, "a Poisson ratio in (-1, 1) (0.2 for the published FEM)");
-  }
-  if (!options.k_sys.empty()) {
-    parameters.sensor_stiffness = parse_double(options.k_sys, command, "--k-sys");
-    if (!(parameters.sensor_stiffness > 0)) {
-      throw_bad_value(command, "--k-sys", options.k_sys, "a positive sensor stiffness in N/m (omit for an ideal sensor)");
-    }
-  }
-  return parameters;
+// The instrument from the flags, through the parser the campaign file uses (the evaluators
+// validate again, as an invariant of the library).
+Instrument instrument(const EvalOptions& options) {
+  return parse_instrument(instrument_flags(command, options.rho_um, options.nu, options.k_sys), ProbeRadius::required);
 }
 
 // The evaluators for the requested outputs; the turgor-only plan never touches h.
@@ -100,7 +84,7 @@ double positive_flag(const std::string& text, std::string_view key, std::string_
   return value;
 }
 
-int evaluate_point(const EvalOptions& options, const ThinShellParameters& parameters) {
+int evaluate_point(const EvalOptions& options, const Instrument& parameters) {
   for (const auto& [text, key] : {std::pair{&options.k, "--k"}, std::pair{&options.d_um, "--d-um"},
                                   std::pair{&options.d0_um, "--d0-um"}}) {
     if (text->empty()) {
@@ -110,10 +94,10 @@ int evaluate_point(const EvalOptions& options, const ThinShellParameters& parame
   const bool has_h = !options.h_nm.empty();
   SampleBlock block(1);
   block.set_column("k", std::vector<double>{positive_flag(options.k, "--k", "a positive stiffness in N/m")});
-  block.set_column("d", std::vector<double>{positive_flag(options.d_um, "--d-um", "a positive diameter in um") * 1e-6});
-  block.set_column("d0", std::vector<double>{positive_flag(options.d0_um, "--d0-um", "a positive diameter in um") * 1e-6});
+  block.set_column("d", std::vector<double>{from_um(positive_flag(options.d_um, "--d-um", "a positive diameter in um"))});
+  block.set_column("d0", std::vector<double>{from_um(positive_flag(options.d0_um, "--d0-um", "a positive diameter in um"))});
   if (has_h) {
-    block.set_column("h", std::vector<double>{positive_flag(options.h_nm, "--h-nm", "a positive thickness in nm") * 1e-9});
+    block.set_column("h", std::vector<double>{from_nm(positive_flag(options.h_nm, "--h-nm", "a positive thickness in nm"))});
   }
   const ThinShellTurgor turgor(parameters, command);
   const ThinShellModulus modulus;
@@ -122,7 +106,7 @@ int evaluate_point(const EvalOptions& options, const ThinShellParameters& parame
   const SampleStatus status = block.status()[0];
   std::cout << "thin-shell inverse (Vogler et al. 2013, Arnoldi et al. 2000): rho = " << options.rho_um
             << " um, nu = " << format_double(parameters.poisson_ratio) << ", k_sys = "
-            << (options.k_sys.empty() ? "inf (ideal sensor)" : options.k_sys + " N/m") << "\n";
+            << (std::isinf(parameters.sensor_stiffness_N_per_m) ? "inf (ideal sensor)" : options.k_sys + " N/m") << "\n";
   for (const Output& output : outputs) {
     if (output.needs_h && !has_h) continue;
     const Quantity* quantity = find_quantity(output.quantity);
@@ -163,7 +147,7 @@ std::optional<std::vector<double>> input_column(const CsvTable& table, std::stri
   return found;
 }
 
-int evaluate_file(const EvalOptions& options, const ThinShellParameters& parameters) {
+int evaluate_file(const EvalOptions& options, const Instrument& parameters) {
   if (options.out.empty()) throw InputError(std::string(command), "--in needs --out (the results CSV to write)");
   for (const auto& [text, key] : {std::pair{&options.k, "--k"}, std::pair{&options.h_nm, "--h-nm"},
                                   std::pair{&options.d_um, "--d-um"}, std::pair{&options.d0_um, "--d0-um"}}) {
@@ -233,7 +217,7 @@ int evaluate_file(const EvalOptions& options, const ThinShellParameters& paramet
 
   std::cout << table.rows.size() << (table.rows.size() == 1 ? " tube" : " tubes") << " from " << table.path << " (rho = " << options.rho_um
             << " um, nu = " << format_double(parameters.poisson_ratio) << ", k_sys = "
-            << (options.k_sys.empty() ? "inf" : options.k_sys + " N/m") << ")"
+            << (std::isinf(parameters.sensor_stiffness_N_per_m) ? "inf" : options.k_sys + " N/m") << ")"
             << (has_h ? "" : "; no thickness column h_nm: turgor outputs only") << "\n";
   for (const auto& [status, count] : counts) {
     std::cout << "  " << std::left << std::setw(28) << to_string(status) << count;
@@ -274,7 +258,7 @@ int run_eval(const Arguments& arguments) {
   if (!options.out.empty() && options.in.empty()) {
     throw InputError(std::string(command), "--out needs --in (a single tube is printed, not written)");
   }
-  const ThinShellParameters parameters = instrument(options);
+  const Instrument parameters = instrument(options);
   return options.in.empty() ? evaluate_point(options, parameters) : evaluate_file(options, parameters);
 }
 

@@ -9,6 +9,7 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/io/output_file.hpp"
+#include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/rawdata/raw_line_file.hpp"
 #include "growthuq/rawdata/raw_line_fit.hpp"
 #include "options.hpp"
@@ -17,14 +18,14 @@ namespace growthuq::cli {
 
 int run_fit_line(const Arguments& arguments) {
   std::string raw_path, out;
-  double rho_um = 0.0, nu = 0.2;
+  std::string rho_um, nu = "0.2";
   bool force = false;
   po::options_description described("options");
   described.add_options()
       ("raw", po::value(&raw_path)->required(), "raw line file (raw.ini)")
       ("out", po::value(&out), "write the fitted line file here (distributions/<line>.ini format)")
       ("rho-um", po::value(&rho_um), "probe radius (um) for relaxation curves whose tube sheet has no rho_um column")
-      ("nu", po::value(&nu)->default_value(0.2, "0.2"), "Poisson ratio of the wall (maps force to E_r(t))")
+      ("nu", po::value(&nu)->default_value(nu), "Poisson ratio of the wall (maps force to E_r(t))")
       ("force", po::bool_switch(&force), "overwrite --out");
   po::positional_options_description positional;
   positional.add("raw", 1);
@@ -40,12 +41,10 @@ int run_fit_line(const Arguments& arguments) {
   }
   const std::string where = "growthuq fit-line";
   RawFitSettings settings;
-  if (!(nu >= 0.0 && nu < 0.5)) throw_bad_value(where, "--nu", format_double(nu), "a Poisson ratio in [0, 0.5)");
-  settings.poisson = nu;
-  if (values.count("rho-um")) {
-    if (!(rho_um > 0.0) || !std::isfinite(rho_um)) throw_bad_value(where, "--rho-um", format_double(rho_um), "a positive probe radius");
-    settings.probe_radius = rho_um * 1e-6;
-  }
+  // --rho-um is optional: curves whose tube sheet has a rho_um column use their own.
+  InstrumentEntries entries = instrument_flags(where, rho_um, nu, "");
+  if (values.count("rho-um")) entries.probe_radius_um.text = rho_um;  // given, even if empty
+  settings.instrument = parse_instrument(entries, ProbeRadius::optional);
   const Overwrite overwrite = force ? Overwrite::allow : Overwrite::refuse;
   if (!out.empty()) check_can_write(out, overwrite);
   const RawLineFit fit = fit_raw_line(read_raw_line_file(raw_path), settings);

@@ -10,8 +10,10 @@
 #include "commands.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/core/units.hpp"
 #include "growthuq/io/csv.hpp"
 #include "growthuq/io/output_file.hpp"
+#include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/relaxation/analysis.hpp"
 #include "growthuq/relaxation/curves.hpp"
 #include "options.hpp"
@@ -24,7 +26,7 @@ struct RelaxOptions {
   std::string meta;
   std::string out;
   std::string distributions_out;
-  std::optional<double> rho_um;
+  Instrument instrument;  // no probe radius unless --rho-um: the tube sheet's rho_um column then
   RelaxationOptions analysis;
   Overwrite overwrite = Overwrite::refuse;
 };
@@ -32,7 +34,7 @@ struct RelaxOptions {
 RelaxOptions parse(const Arguments& arguments, bool& run) {
   RelaxOptions options;
   po::options_description described("options");
-  double rho_um = 0.0;
+  std::string rho_um, nu = "0.2";
   described.add_options()
       ("curves", po::value(&options.curves)->required(), "force curves: CSV curve,t_s,F_uN")
       ("meta", po::value(&options.meta), "per-curve metadata: CSV curve,delta_um,p_MPa,d_um,h_nm[,rho_um] "
@@ -44,7 +46,7 @@ RelaxOptions parse(const Arguments& arguments, bool& run) {
       ("drop-ramp-multiple", po::value(&options.analysis.drop_ramp_multiple)->default_value(0.0),
        "step fit: leave out hold samples with t < this x ramp time")
       ("rho-um", po::value(&rho_um), "probe radius (um) for curves without a rho_um column")
-      ("nu", po::value(&options.analysis.poisson)->default_value(0.2, "0.2"), "Poisson ratio of the wall")
+      ("nu", po::value(&nu)->default_value(nu), "Poisson ratio of the wall")
       ("fit-distributions", po::value(&options.distributions_out),
        "write lognormal [tau] and [einf] line-file sections fitted to the ok curves")
       ("force", "overwrite existing outputs");
@@ -58,20 +60,16 @@ RelaxOptions parse(const Arguments& arguments, bool& run) {
   if (!run) return options;
   const int terms = options.analysis.terms;
   if (terms < 1 || terms > 3) throw_bad_value("growthuq relax", "--terms", std::to_string(terms), "1, 2 or 3");
-  const double nu = options.analysis.poisson;
-  if (!(nu >= 0.0 && nu < 0.5)) throw_bad_value("growthuq relax", "--nu", format_double(nu), "a Poisson ratio in [0, 0.5)");
+  InstrumentEntries entries = instrument_flags("growthuq relax", rho_um, nu, "");
+  if (values.count("rho-um")) entries.probe_radius_um.text = rho_um;  // given, even if empty
+  options.instrument = parse_instrument(entries, ProbeRadius::optional);
+  options.analysis.poisson_ratio = options.instrument.poisson_ratio;
   const double drop = options.analysis.drop_ramp_multiple;
   if (!(drop >= 0.0) || !std::isfinite(drop)) {
     throw_bad_value("growthuq relax", "--drop-ramp-multiple", format_double(drop), "a number >= 0");
   }
   if (options.analysis.ramp_aware && drop > 0.0) {
     throw InputError("growthuq relax", "--drop-ramp-multiple applies to the step fit only, not with --ramp-aware");
-  }
-  if (values.count("rho-um")) {
-    if (!(rho_um > 0.0) || !std::isfinite(rho_um)) {
-      throw_bad_value("growthuq relax", "--rho-um", format_double(rho_um), "a positive probe radius");
-    }
-    options.rho_um = rho_um * 1e-6;
   }
   if (values.count("force")) options.overwrite = Overwrite::allow;
   return options;
@@ -90,9 +88,9 @@ std::string fits_csv(const std::vector<CurveFit>& fits, int terms) {
                     number_or_blank(fitted && terms > 1, fit.tau.empty() ? 0.0 : fit.tau.front()),
                     number_or_blank(fitted && terms == 3, fit.tau.size() == 3 ? fit.tau[1] : 0.0),
                     number_or_blank(fitted, fit.tau.empty() ? 0.0 : fit.tau.back()),
-                    number_or_blank(fitted, fit.einf), number_or_blank(fitted, fit.slow_modulus * 1e-6),
-                    number_or_blank(fitted, fit.viscosity * 1e-6), number_or_blank(fitted, fit.modulus0 * 1e-6),
-                    number_or_blank(fitted, fit.tau_slow_relative_se * 100.0),
+                    number_or_blank(fitted, fit.einf), number_or_blank(fitted, to_MPa(fit.slow_modulus)),
+                    number_or_blank(fitted, to_MPa_s(fit.viscosity)), number_or_blank(fitted, to_MPa(fit.modulus0)),
+                    number_or_blank(fitted, to_pct(fit.tau_slow_relative_se)),
                     number_or_blank(fit.points > 0, fit.rms), number_or_blank(fit.points > 0, fit.aic),
                     format_double(fit.ramp_time), std::to_string(fit.points)});
   }
@@ -142,7 +140,7 @@ void print_summary(const std::vector<CurveFit>& fits, const RelaxOptions& option
       ++ok;
       std::cout << "tau_slow " << format_double(std::round(fit.tau.back() * 1e3) / 1e3) << " s, E_inf/E_r(0) "
                 << format_double(std::round(fit.einf * 1e3) / 1e3) << ", eta "
-                << format_double(std::round(fit.viscosity * 1e-6 * 10) / 10) << " MPa s\n";
+                << format_double(std::round(to_MPa_s(fit.viscosity) * 10) / 10) << " MPa s\n";
     } else {
       std::cout << "fit_failed: " << fit.reason << "\n";
     }
@@ -159,7 +157,7 @@ int run_relax(const Arguments& arguments) {
   check_can_write(options.out, options.overwrite);
   if (!options.distributions_out.empty()) check_can_write(options.distributions_out, options.overwrite);
 
-  const std::vector<RelaxationCurve> curves = read_relaxation_curves(options.curves, options.meta, options.rho_um);
+  const std::vector<RelaxationCurve> curves = read_relaxation_curves(options.curves, options.meta, given_probe_radius_m(options.instrument));
   std::vector<CurveFit> fits;
   for (const RelaxationCurve& curve : curves) fits.push_back(analyze_relaxation_curve(curve, options.analysis));
 

@@ -12,7 +12,9 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/distributions/line_file.hpp"
+#include "growthuq/core/units.hpp"
 #include "growthuq/io/output_file.hpp"
+#include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/synthetic/synthetic_line.hpp"
 #include "options.hpp"
 
@@ -29,8 +31,8 @@ struct SynthOptions {
   std::string seed = "1";
   std::string tubes = "20:60";
   std::string curves = "20:40";
-  double rho_um = 0.5;
-  double nu = 0.2;
+  std::string rho_um = "0.5";  // text, parsed with the other commands' instrument flags
+  std::string nu = "0.2";
   double hold_s = 30.0;
   double sample_hz = 50.0;
   double ramp_um_per_s = 100.0;
@@ -60,17 +62,15 @@ SynthSettings settings_of(const SynthOptions& options) {
   settings.seed = parse_count(options.seed, location, "--seed");
   settings.tubes = parse_range(options.tubes, "--tubes");
   settings.curves = parse_range(options.curves, "--curves");
-  settings.probe_radius = positive(options.rho_um, "--rho-um") * 1e-6;
-  if (!(options.nu >= 0.0 && options.nu < 0.5)) throw_bad_value(location, "--nu", format_double(options.nu), "a Poisson ratio in [0, 0.5)");
-  settings.poisson = options.nu;
+  settings.instrument = parse_instrument(instrument_flags(location, options.rho_um, options.nu, ""), ProbeRadius::required);
   settings.protocol.hold = positive(options.hold_s, "--hold-s");
   settings.protocol.sample_interval = 1.0 / positive(options.sample_hz, "--sample-hz");
-  settings.protocol.rate = positive(options.ramp_um_per_s, "--ramp-um-per-s") * 1e-6;
-  settings.protocol.set_point = positive(options.set_point_uN, "--set-point-uN") * 1e-6;
+  settings.protocol.rate = from_um_per_s(positive(options.ramp_um_per_s, "--ramp-um-per-s"));
+  settings.protocol.set_point = from_uN(positive(options.set_point_uN, "--set-point-uN"));
   if (!(options.noise_pct >= 0.0) || !(options.noise_pct < 100.0)) {
     throw_bad_value(location, "--force-noise-pct", format_double(options.noise_pct), "a percentage in [0, 100)");
   }
-  settings.force_noise = options.noise_pct * 1e-2;
+  settings.force_noise = from_pct(options.noise_pct);
   return settings;
 }
 
@@ -80,7 +80,8 @@ std::string regenerate_command(const SynthOptions& options, const SynthSettings&
   std::string command = "growthuq synth";
   for (const std::string& line : options.lines) command += " " + line;
   command += " --seed " + std::to_string(settings.seed) + " --tubes " + options.tubes + " --curves " + options.curves +
-             " --rho-um " + format_double(options.rho_um) + " --nu " + format_double(options.nu) + " --hold-s " +
+             " --rho-um " + format_double(parse_double(options.rho_um, location, "--rho-um")) + " --nu " +
+             format_double(settings.instrument.poisson_ratio) + " --hold-s " +
              format_double(options.hold_s) + " --sample-hz " + format_double(options.sample_hz) + " --ramp-um-per-s " +
              format_double(options.ramp_um_per_s) + " --set-point-uN " + format_double(options.set_point_uN) +
              " --force-noise-pct " + format_double(options.noise_pct) + " --out " + options.out;
@@ -98,8 +99,8 @@ int run_synth(const Arguments& arguments) {
       ("seed", po::value(&options.seed)->default_value(options.seed), "seed, 0 to 2^64 - 1; a line's files depend only on it, the line's name and its truth")
       ("tubes", po::value(&options.tubes)->default_value(options.tubes), "tubes per table and line, drawn uniformly in low:high")
       ("curves", po::value(&options.curves)->default_value(options.curves), "relaxation curves per line, drawn uniformly in low:high")
-      ("rho-um", po::value(&options.rho_um)->default_value(options.rho_um, "0.5"), "probe radius (um), written to the tube sheet")
-      ("nu", po::value(&options.nu)->default_value(options.nu, "0.2"), "Poisson ratio of the wall")
+      ("rho-um", po::value(&options.rho_um)->default_value(options.rho_um), "probe radius (um), written to the tube sheet")
+      ("nu", po::value(&options.nu)->default_value(options.nu), "Poisson ratio of the wall")
       ("hold-s", po::value(&options.hold_s)->default_value(options.hold_s, "30"), "hold after the set point (s); must outlast tau_slow")
       ("sample-hz", po::value(&options.sample_hz)->default_value(options.sample_hz, "50"), "sampling rate of the exported curves (Hz)")
       ("ramp-um-per-s", po::value(&options.ramp_um_per_s)->default_value(options.ramp_um_per_s, "100"), "indentation speed of the ramp (um/s)")

@@ -3,6 +3,7 @@
 #include "finite_checks.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/core/units.hpp"
 
 namespace growthuq {
 
@@ -14,7 +15,7 @@ using growth_detail::scaled_ratio;
 
 void validate(const GrowthParameters& parameters, std::string_view location) {
   if (!non_negative_finite(parameters.p0)) {
-    throw_bad_value(location, "p0", format_double(parameters.p0 / 1e6) + " MPa",
+    throw_bad_value(location, "p0", format_double(parameters.p0 / unit_factor::MPa) + " MPa",
                     "a finite yield pressure >= 0 MPa");
   }
   if (!positive_finite(parameters.kappa)) {

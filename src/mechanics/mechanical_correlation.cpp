@@ -8,6 +8,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/core/units.hpp"
 #include "growthuq/mechanics/thin_shell_evaluators.hpp"
 #include "growthuq/sampling/random_stream.hpp"
 #include "growthuq/stats/rank_correlation.hpp"
@@ -29,10 +30,10 @@ double draw(const DrawRange& range, DrawScale scale, double u) {
 }  // namespace
 
 void validate(const MechanicalDrawOptions& options, std::string_view location) {
-  check_range(options.p, location, "p_MPa", 1e6);
-  check_range(options.E, location, "E_MPa", 1e6);
-  check_range(options.h, location, "h_nm", 1e-9);
-  check_range(options.d0, location, "d0_um", 1e-6);
+  check_range(options.p, location, "p_MPa", unit_factor::MPa);
+  check_range(options.E, location, "E_MPa", unit_factor::MPa);
+  check_range(options.h, location, "h_nm", unit_factor::nm);
+  check_range(options.d0, location, "d0_um", unit_factor::um);
   if (options.samples < 3) {
     throw_bad_value(location, "samples", std::to_string(options.samples), "at least 3 samples");
   }
@@ -56,7 +57,7 @@ SampleBlock draw_mechanical_samples(const MechanicalDrawOptions& options) {
 }
 
 MechanicalCorrelation mechanical_rank_correlation(const MechanicalDrawOptions& options,
-                                                  const ThinShellParameters& shell,
+                                                  const Instrument& shell,
                                                   std::string_view location) {
   validate(options, location);
   const ThinShellForward forward(shell, location);

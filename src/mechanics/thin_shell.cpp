@@ -7,6 +7,7 @@
 #include "growthuq/mechanics/thin_shell.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <gsl/gsl_errno.h>
@@ -36,30 +37,14 @@ bool on_unstable_branch(double ln_lambda) noexcept { return ln_lambda > 1.0; }
 
 }  // namespace
 
-void validate(const ThinShellParameters& parameters, std::string_view location) {
-  if (!positive_finite(parameters.probe_radius)) {
-    throw_bad_value(location, "rho_um",
-                    std::isnan(parameters.probe_radius) ? "" : format_double(parameters.probe_radius * 1e6),
-                    "the probe radius in um, a positive number (required: it has no default)");
-  }
-  if (!(parameters.poisson_ratio > -1.0 && parameters.poisson_ratio < 1.0)) {
-    throw_bad_value(location, "nu", format_double(parameters.poisson_ratio),
-                    "a Poisson ratio in (-1, 1) (0.2 for the published FEM)");
-  }
-  if (!(parameters.sensor_stiffness > 0.0)) {
-    throw_bad_value(location, "k_sys_N_per_m", format_double(parameters.sensor_stiffness),
-                    "a positive sensor stiffness in N/m (or inf for an ideal sensor)");
-  }
-}
-
 TurgorResult invert_turgor(double k_measured, double d, double d0,
-                           const ThinShellParameters& parameters) noexcept {
+                           const Instrument& parameters) noexcept {
   TurgorResult result{nan, nan, nan, nan, nan, nan, SampleStatus::ok};
   if (!positive_finite(k_measured) || !positive_finite(d) || !positive_finite(d0)) {
     result.status = SampleStatus::invalid_input;
     return result;
   }
-  const double k_sys = parameters.sensor_stiffness;
+  const double k_sys = parameters.sensor_stiffness_N_per_m;
   if (k_measured >= k_sys) {
     result.status = SampleStatus::stiffness_at_sensor_limit;
     return result;
@@ -86,7 +71,7 @@ TurgorResult invert_turgor(double k_measured, double d, double d0,
     return result;
   }
   result.alpha = decay_length(d, result.q);
-  result.x = parameters.probe_radius / result.alpha;
+  result.x = parameters.probe_radius_m / result.alpha;
   result.phi = arnoldi_phi(result.x);
   result.p = 4.0 * k / (3.0 * std::numbers::pi * d * result.phi);
   if (!positive_finite(result.p) || !positive_finite(k)) {
@@ -122,7 +107,7 @@ ModulusResult invert_modulus(double p, double d, double d0, double h) noexcept {
 }
 
 ForwardResult thin_shell_forward(double p, double E, double h, double d0,
-                                 const ThinShellParameters& parameters) noexcept {
+                                 const Instrument& parameters) noexcept {
   ForwardResult result{nan, nan, nan, nan, nan, SampleStatus::ok};
   if (!positive_finite(p) || !positive_finite(E) || !positive_finite(h) || !positive_finite(d0)) {
     result.status = SampleStatus::invalid_input;
@@ -165,9 +150,9 @@ ForwardResult thin_shell_forward(double p, double E, double h, double d0,
     return result;
   }
   result.alpha = decay_length(result.d, q);
-  result.phi = arnoldi_phi(parameters.probe_radius / result.alpha);
+  result.phi = arnoldi_phi(parameters.probe_radius_m / result.alpha);
   const double k = 0.75 * std::numbers::pi * p * result.d * result.phi;
-  result.k_measured = k / (1.0 + k / parameters.sensor_stiffness);
+  result.k_measured = k / (1.0 + k / parameters.sensor_stiffness_N_per_m);
   if (!positive_finite(result.d) || !positive_finite(result.k_measured)) {
     result.k_measured = nan;
     result.status = SampleStatus::out_of_range;

@@ -6,7 +6,7 @@
 
 namespace growthuq {
 
-ThinShellTurgor::ThinShellTurgor(const ThinShellParameters& parameters, std::string_view location)
+ThinShellTurgor::ThinShellTurgor(const Instrument& parameters, std::string_view location)
     : parameters_(parameters) {
   validate(parameters_, location);
 }
@@ -56,7 +56,7 @@ void ThinShellModulus::evaluate(SampleBlock& block) const {
   }
 }
 
-ThinShellForward::ThinShellForward(const ThinShellParameters& parameters, std::string_view location)
+ThinShellForward::ThinShellForward(const Instrument& parameters, std::string_view location)
     : parameters_(parameters) {
   validate(parameters_, location);
 }

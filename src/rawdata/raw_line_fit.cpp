@@ -52,8 +52,9 @@ RelaxationFits fit_curves(const RawLineFile& raw, const RawFitSettings& settings
   RelaxationFits relaxation;
   relaxation.options.terms = raw.relaxation.terms;
   relaxation.options.ramp_aware = raw.relaxation.ramp_aware;
-  relaxation.options.poisson = settings.poisson;
-  relaxation.curves = read_relaxation_curves(raw.relaxation.curves, raw.relaxation.meta, settings.probe_radius);
+  relaxation.options.poisson_ratio = settings.instrument.poisson_ratio;
+  relaxation.curves = read_relaxation_curves(raw.relaxation.curves, raw.relaxation.meta,
+                                             given_probe_radius_m(settings.instrument));
   if (settings.fit_curves) {
     relaxation.fits = settings.fit_curves(relaxation.curves, relaxation.options);
     if (relaxation.fits.size() != relaxation.curves.size()) throw std::logic_error("curve fitter lost curves of " + raw.name);

@@ -127,7 +127,7 @@ CurveFit analyze_relaxation_curve(const RelaxationCurve& curve, const Relaxation
                      " samples before the end: expected a hold of at least " + std::to_string(needed) + " samples");
     return result;
   }
-  const ShellGeometry shell{curve.turgor, curve.diameter, curve.thickness, curve.probe_radius, options.poisson};
+  const ShellGeometry shell{curve.turgor, curve.diameter, curve.thickness, {curve.probe_radius_m, options.poisson_ratio}};
   try {
     if (options.ramp_aware) {
       fit_ramp(curve, options, peak, shell, result);
@@ -140,7 +140,7 @@ CurveFit analyze_relaxation_curve(const RelaxationCurve& curve, const Relaxation
   return result;
 }
 
-std::vector<double> fitted_force(const RelaxationCurve& curve, const CurveFit& fit, double poisson) {
+std::vector<double> fitted_force(const RelaxationCurve& curve, const CurveFit& fit, double poisson_ratio) {
   std::vector<double> force(curve.t.size(), std::numeric_limits<double>::quiet_NaN());
   if (curve.t.empty()) return force;
   if (!fit.springs.tau.empty()) {
@@ -156,7 +156,7 @@ std::vector<double> fitted_force(const RelaxationCurve& curve, const CurveFit& f
   }
   if (fit.tau.empty() || fit.amplitude.size() != fit.tau.size() || !(fit.modulus0 > 0.0)) return force;
   const auto peak = static_cast<std::size_t>(std::max_element(curve.force.begin(), curve.force.end()) - curve.force.begin());
-  const ShellGeometry shell{curve.turgor, curve.diameter, curve.thickness, curve.probe_radius, poisson};
+  const ShellGeometry shell{curve.turgor, curve.diameter, curve.thickness, {curve.probe_radius_m, poisson_ratio}};
   for (std::size_t i = peak; i < curve.t.size(); ++i) {
     const double since_peak = curve.t[i] - curve.t[peak];
     double relative = fit.einf;

@@ -1,11 +1,14 @@
 #include "growthuq/relaxation/curves.hpp"
 
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/core/units.hpp"
 #include "growthuq/io/csv.hpp"
+#include "growthuq/mechanics/instrument.hpp"
 
 namespace growthuq {
 namespace {
@@ -15,11 +18,11 @@ struct MetaColumn {
   const char* name;
   double to_si;
 };
-constexpr MetaColumn indentation_column{"delta_um", 1e-6};
-constexpr MetaColumn turgor_column{"p_MPa", 1e6};
-constexpr MetaColumn diameter_column{"d_um", 1e-6};
-constexpr MetaColumn thickness_column{"h_nm", 1e-9};
-constexpr MetaColumn radius_column{"rho_um", 1e-6};
+constexpr MetaColumn indentation_column{"delta_um", unit_factor::um};
+constexpr MetaColumn turgor_column{"p_MPa", unit_factor::MPa};
+constexpr MetaColumn diameter_column{"d_um", unit_factor::um};
+constexpr MetaColumn thickness_column{"h_nm", unit_factor::nm};
+constexpr MetaColumn radius_column{"rho_um", unit_factor::um};
 
 struct Metadata {
   double indentation = 0.0, turgor = 0.0, diameter = 0.0, thickness = 0.0, probe_radius = 0.0;
@@ -33,6 +36,16 @@ double positive_cell(const CsvTable& table, std::size_t row, const MetaColumn& c
   return value * column.to_si;
 }
 
+// A tube sheet's rho_um, in the instrument's range and with its message (as --rho-um and the
+// campaign file's probe_radius_um).
+double probe_radius_cell(const CsvTable& table, std::size_t row) {
+  const std::string& text = table.rows[row][table.column_index(radius_column.name)];
+  const std::optional<double> rho_um = try_parse_double(text);
+  const double rho = rho_um ? *rho_um * radius_column.to_si : std::numeric_limits<double>::quiet_NaN();
+  check_instrument_value(InstrumentField::probe_radius, rho, table.row_location(row), radius_column.name, text);
+  return rho;
+}
+
 Metadata metadata_of_row(const CsvTable& table, std::size_t row, std::optional<double> probe_radius) {
   Metadata meta;
   meta.location = table.row_location(row);
@@ -40,7 +53,7 @@ Metadata metadata_of_row(const CsvTable& table, std::size_t row, std::optional<d
   meta.turgor = positive_cell(table, row, turgor_column);
   meta.diameter = positive_cell(table, row, diameter_column);
   meta.thickness = positive_cell(table, row, thickness_column);
-  meta.probe_radius = table.has_column(radius_column.name) ? positive_cell(table, row, radius_column) : *probe_radius;
+  meta.probe_radius = table.has_column(radius_column.name) ? probe_radius_cell(table, row) : *probe_radius;
   return meta;
 }
 
@@ -89,7 +102,7 @@ std::vector<RelaxationCurve> read_relaxation_curves(const std::string& curves_pa
                       "a time after the previous sample of curve '" + name + "' (" + format_double(curve.t.back()) + " s)");
     }
     curve.t.push_back(times[row]);
-    curve.force.push_back(forces[row] * 1e-6);
+    curve.force.push_back(from_uN(forces[row]));
     if (meta_path.empty()) {
       const Metadata meta = metadata_of_row(table, row, probe_radius);
       auto [known, first] = inline_metadata.try_emplace(name, meta);
@@ -134,7 +147,7 @@ std::vector<RelaxationCurve> read_relaxation_curves(const std::string& curves_pa
     curve.turgor = meta->second.turgor;
     curve.diameter = meta->second.diameter;
     curve.thickness = meta->second.thickness;
-    curve.probe_radius = meta->second.probe_radius;
+    curve.probe_radius_m = meta->second.probe_radius;
   }
   return curves;
 }

@@ -15,6 +15,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/core/units.hpp"
 #include "relaxation/nnls.hpp"
 #include "growthuq/relaxation/simulator.hpp"
 
@@ -276,13 +277,13 @@ PronyFit fit(const Basis& basis, std::span<const double> values, const PronyFitO
   for (std::size_t i = 0; i + 1 < best.tau.size() && result.reason.empty(); ++i) {
     if (best.tau[i + 1] < options.min_separation * best.tau[i]) {
       result.reason = describe_tau(i) + " and " + describe_tau(i + 1) + " are within " +
-                      format_double(std::round((options.min_separation - 1.0) * 100.0)) + " % of each other: not separable";
+                      format_double(std::round(to_pct(options.min_separation - 1.0))) + " % of each other: not separable";
     }
   }
   for (std::size_t i = 0; i < best.tau.size() && result.reason.empty(); ++i) {
     if (!(result.tau_relative_se[i] <= options.max_relative_se)) {
       result.reason = describe_tau(i) + " is undetermined by the data (standard error " +
-                      (std::isfinite(result.tau_relative_se[i]) ? format_double(std::round(result.tau_relative_se[i] * 100.0)) + " %)"
+                      (std::isfinite(result.tau_relative_se[i]) ? format_double(std::round(to_pct(result.tau_relative_se[i]))) + " %)"
                                                                  : std::string("unbounded)"));
     }
   }

@@ -14,7 +14,7 @@ namespace growthuq {
 namespace {
 
 ShellGeometry shell_of(const RelaxationTube& tube) {
-  return ShellGeometry{tube.turgor, tube.diameter, tube.thickness, tube.probe_radius, tube.poisson};
+  return ShellGeometry{tube.turgor, tube.diameter, tube.thickness, tube.instrument};
 }
 
 void validate(const RelaxationTube& tube) {
@@ -22,7 +22,7 @@ void validate(const RelaxationTube& tube) {
     if (!good) throw_bad_value("synthetic relaxation tube", key, format_double(value), expected);
   };
   const std::pair<double, const char*> positive[] = {{tube.turgor, "p"},           {tube.diameter, "d"},
-                                                      {tube.thickness, "h"},        {tube.probe_radius, "rho"},
+                                                      {tube.thickness, "h"},        {tube.instrument.probe_radius_m, "rho"},
                                                       {tube.stiffness0, "k0"},      {tube.tau_slow, "tau_slow"},
                                                       {tube.tau_fast, "tau_fast"}};
   for (const auto& [value, key] : positive) require(value > 0.0 && std::isfinite(value), key, value, "a positive finite number");

@@ -150,24 +150,22 @@ RelaxationFiles relaxation_files(const LineDistributions& truth, const SynthSett
   const LineVariable& h = need(truth, "h", why);
   const LineVariable& tau = need(truth, "tau", why);
   const LineVariable& einf = need(truth, "einf", why);
-  ThinShellParameters instrument;
-  instrument.probe_radius = settings.probe_radius;
-  instrument.poisson_ratio = settings.poisson;
+  const Instrument& instrument = settings.instrument;
   // h: the line's median TEM thickness, to the nm, on every tube sheet row.
-  const double thickness_nm = std::round(quantile(h.distribution, 0.5) * h.unit->to_si * 1e9);
+  const double thickness_nm = std::round(to_nm(quantile(h.distribution, 0.5) * h.unit->to_si));
 
   Draws draws(truth, derive_key(line_key, "relaxation"));
   const std::uint64_t noise_key = derive_key(line_key, "relaxation_noise");
   const int time_decimals = decimals_of(settings.protocol.sample_interval);
-  const std::string rho_um = format_double(settings.probe_radius * 1e6);
+  const std::string rho_um = format_double(to_um(instrument.probe_radius_m));
   RelaxationFiles files;
   const std::string common = header("stress relaxation of further tubes (ramp to " +
-                                        format_double(settings.protocol.set_point * 1e6) + " uN at " +
-                                        fixed(settings.protocol.rate * 1e6, 0) + " um/s, hold " +
+                                        format_double(to_uN(settings.protocol.set_point)) + " uN at " +
+                                        fixed(to_um_per_s(settings.protocol.rate), 0) + " um/s, hold " +
                                         format_double(settings.protocol.hold) + " s, exported at " +
                                         fixed(1.0 / settings.protocol.sample_interval, 0) + " Hz)",
                                     truth, command);
-  files.curves = common + "# Force noise " + format_double(settings.force_noise * 100.0) +
+  files.curves = common + "# Force noise " + format_double(to_pct(settings.force_noise)) +
                  " % of the set point; simulated ramp and hold (growthuq synthetic/relaxation_tube.hpp).\n" +
                  truth_comment(tau) + truth_comment(einf) + "curve,t_s,F_uN\n";
   files.meta = common + "# The tube sheet: delta = probe displacement during the hold, p = turgor from the tube's own\n"
@@ -179,9 +177,8 @@ RelaxationFiles relaxation_files(const LineDistributions& truth, const SynthSett
   for (std::size_t c = 0; c < count; ++c) {
     const std::string name = two_digit_name("R", c);
     RelaxationTube tube;
-    tube.probe_radius = settings.probe_radius;
-    tube.poisson = settings.poisson;
-    tube.thickness = thickness_nm * 1e-9;
+    tube.instrument = instrument;
+    tube.thickness = from_nm(thickness_nm);
     tube.tau_slow = draws.si(tau);
     tube.einf = draws.si(einf);
     for (int attempt = 0; attempt < 1000 && !(tube.einf >= 0.0 && tube.einf < 1.0); ++attempt) tube.einf = draws.si(einf);
@@ -198,8 +195,9 @@ RelaxationFiles relaxation_files(const LineDistributions& truth, const SynthSett
       const TurgorResult turgor = invert_turgor(tube.stiffness0, tube.diameter, plasmolysed, instrument);
       tube.turgor = std::round(turgor.p * 1e-2) * 1e2;  // to 1e-4 MPa, as written
       if (turgor.status != SampleStatus::ok || !(tube.turgor > 0.0)) continue;
-      const ShellGeometry shell{tube.turgor, tube.diameter, tube.thickness, tube.probe_radius, tube.poisson};
-      const double membrane = (1.0 - tube.poisson * tube.poisson) * tube.turgor * tube.diameter / (2.0 * tube.thickness);
+      const ShellGeometry shell{tube.turgor, tube.diameter, tube.thickness, instrument};
+      const double nu = instrument.poisson_ratio;
+      const double membrane = (1.0 - nu * nu) * tube.turgor * tube.diameter / (2.0 * tube.thickness);
       valid = tube.einf * relaxation_modulus(tube.stiffness0, shell) > 1.5 * membrane;
     }
     if (!valid) {
@@ -215,10 +213,10 @@ RelaxationFiles relaxation_files(const LineDistributions& truth, const SynthSett
 
     const SimulatedCurve curve = simulate_relaxation_tube(tube, settings.protocol, settings.force_noise, counter_bits(noise_key, c));
     for (std::size_t i = 0; i < curve.t.size(); ++i) {
-      files.curves += name + "," + fixed(curve.t[i], time_decimals) + "," + fixed(curve.force[i] * 1e6, 3) + "\n";
+      files.curves += name + "," + fixed(curve.t[i], time_decimals) + "," + fixed(to_uN(curve.force[i]), 3) + "\n";
     }
-    files.meta += name + "," + fixed(curve.indentation * 1e6, 4) + "," + fixed(tube.turgor * 1e-6, 4) + "," +
-                  fixed(tube.diameter * 1e6, 2) + "," + fixed(thickness_nm, 0) + "," + rho_um + "\n";
+    files.meta += name + "," + fixed(to_um(curve.indentation), 4) + "," + fixed(to_MPa(tube.turgor), 4) + "," +
+                  fixed(to_um(tube.diameter), 2) + "," + fixed(thickness_nm, 0) + "," + rho_um + "\n";
     files.truth += name + "," + format_double(tube.tau_slow) + "," + format_double(tube.einf) + "," +
                    format_double(tube.tau_fast) + "," + format_double(tube.fast_share) + "," + format_double(tube.stiffness0) + "\n";
   }

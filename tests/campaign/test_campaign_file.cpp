@@ -47,9 +47,9 @@ TEST_CASE("a valid campaign is read with SI values and resolved paths") {
   CHECK(campaign.seed == 7);
   CHECK(campaign.samples == 300);
   CHECK(campaign.outputs == std::vector<std::string>{"p", "E", "eta", "v"});
-  CHECK(campaign.instrument.probe_radius == doctest::Approx(0.5e-6).epsilon(1e-15));
+  CHECK(campaign.instrument.probe_radius_m == doctest::Approx(0.5e-6).epsilon(1e-15));
   CHECK(campaign.instrument.poisson_ratio == 0.2);
-  CHECK(std::isinf(campaign.instrument.sensor_stiffness));
+  CHECK(std::isinf(campaign.instrument.sensor_stiffness_N_per_m));
   CHECK(campaign.yield_pressure == doctest::Approx(1e5).epsilon(1e-15));
   CHECK(campaign.formats.csv);
   CHECK(campaign.formats.hdf5);
@@ -93,7 +93,15 @@ TEST_CASE("each mistake is one error naming file and line") {
   CHECK(error_of(replaced(valid, "seed = 7", "seed = -7")) == file + ":3: seed = '-7': expected a whole number from 0 to 18446744073709551615");
   CHECK(error_of(replaced(valid, "samples = 300", "samples = 0")) == file + ":4: samples = '0': expected a whole number from 1 to 4294967295");
   CHECK(error_of(replaced(valid, "outputs = p, E, eta, v", "outputs = p, turgor")).starts_with(file + ":5: outputs = 'turgor': expected quantities among k, h"));
-  CHECK(error_of(replaced(valid, "probe_radius_um = 0.5", "probe_radius_um = -1")) == file + ":8: probe_radius_um = '-1': expected a probe radius in um, in (0, 1000]");
+  CHECK(error_of(replaced(valid, "probe_radius_um = 0.5", "probe_radius_um = -1")) == file + ":8: probe_radius_um = '-1': expected a probe radius in um, a finite number > 0");
+  // The instrument keys take exactly the values and give the messages of --rho-um, --nu, --k-sys
+  // (mechanics/instrument.hpp): nu = 0.5 and 0.7 were accepted here before, like any nu in [0, 1).
+  for (const char* nu : {"0.5", "0.7", "-0.1", "nan"}) {
+    CHECK(error_of(replaced(valid, "probe_radius_um = 0.5", "probe_radius_um = 0.5\npoisson_ratio = " + std::string(nu))) ==
+          file + ":9: poisson_ratio = '" + nu + "': expected a Poisson ratio in [0, 0.5)");
+  }
+  CHECK(error_of(replaced(valid, "probe_radius_um = 0.5", "probe_radius_um = 0.5\nsensor_stiffness_N_per_m = 0")) ==
+        file + ":9: sensor_stiffness_N_per_m = '0': expected a sensor stiffness in N/m, a number > 0 or inf (an ideal sensor)");
   CHECK(error_of(replaced(valid, "probe_radius_um = 0.5", "probe_radius = 0.5")) == file + ":7: [instrument] lacks the required key 'probe_radius_um'");
   CHECK(error_of(replaced(valid, "yield_pressure_MPa = 0.1", "yield_presure_MPa = 0.1")) == file + ":10: unknown key 'yield_presure_MPa' in [growth] (allowed: yield_pressure_MPa, reference_line)");
   CHECK(error_of(replaced(valid, "lines/m1.ini", "lines/missing.ini")).starts_with(file + ":16: distributions = 'lines/missing.ini': expected an existing file"));

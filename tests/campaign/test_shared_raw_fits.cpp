@@ -95,7 +95,7 @@ TEST_CASE("a curve fit survives the trip between processes bit for bit") {
 TEST_CASE("a raw line fitted through the shared curve fitter equals the line fitted alone") {
   const RawLineFile raw = read_raw_line_file(wild_type_dir + "/raw.ini");
   RawFitSettings alone;
-  alone.probe_radius = 0.5e-6;
+  alone.instrument.probe_radius_m = 0.5e-6;
   const RawLineFit expected = fit_raw_line(raw, alone);
 
   const std::unique_ptr<Pool> pool = make_serial_pool();

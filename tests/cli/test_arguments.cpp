@@ -1,5 +1,6 @@
 // Missing command-line arguments, for every command that has them: one line on stderr naming
-// what is missing and the usage that `--help` prints, exit status 2, nothing written.
+// what is missing and the usage that `--help` prints, exit status 2, nothing written. And the
+// instrument flags (--rho-um, --nu), which every command that takes them parses alike.
 #include <doctest/doctest.h>
 
 #include <sys/wait.h>
@@ -90,5 +91,38 @@ TEST_CASE("cli: a missing required option is reported the same way, after the po
     CHECK(run.status == 2);
     CHECK(run.err == std::string("growthuq ") + command + ": error: missing " + option + ": " + usage_of(command) +
                          " (see growthuq " + command + " --help)\n");
+  }
+}
+
+TEST_CASE("cli: every command refuses the same bad probe radius and Poisson ratio with the same message") {
+  // Each command with its other arguments valid up to the instrument, which is parsed first.
+  const struct {
+    const char* command;
+    const char* arguments;
+  } commands[] = {
+      {"eval", "--k 2 --d-um 6 --d0-um 5"},
+      {"correlate", ""},
+      {"synth", "line.ini --out data"},
+      {"relax", "curves.csv --out fits.csv"},
+      {"fit-line", "raw.ini"},
+  };
+  const std::string nu_range = "a Poisson ratio in [0, 0.5)";
+  const std::string rho_range = "a probe radius in um, a finite number > 0";
+  for (const auto& c : commands) {
+    const std::string prefix = std::string("growthuq ") + c.command + ": error: ";
+    for (const char* nu : {"0.5", "-0.1", "0.7", "nan", "inf", "abc"}) {
+      CAPTURE(c.command);
+      CAPTURE(nu);
+      const Run run = growthuq(std::string(c.command) + " " + c.arguments + " --rho-um 0.5 --nu=" + nu);
+      CHECK(run.status == 2);
+      CHECK(run.err == prefix + "--nu = '" + nu + "': expected " + nu_range + "\n");
+    }
+    for (const char* rho : {"0", "-1", "nan", "inf", "abc"}) {
+      CAPTURE(c.command);
+      CAPTURE(rho);
+      const Run run = growthuq(std::string(c.command) + " " + c.arguments + " --rho-um=" + rho);
+      CHECK(run.status == 2);
+      CHECK(run.err == prefix + "--rho-um = '" + rho + "': expected " + rho_range + "\n");
+    }
   }
 }

@@ -55,3 +55,39 @@ TEST_CASE("units convert to SI and name columns") {
   }
   CHECK(default_column_name(*find_quantity("v")) == "v_um_per_s");
 }
+
+TEST_CASE("named unit conversions are the unit table's factors and their decimal reciprocals") {
+  // Into SI: the same multiplication as find_unit(...).to_si, so values read through a column's
+  // unit and through a named helper are the same double.
+  const auto to_si = [](const char* symbol) { return find_unit(symbol, "", "unit").to_si; };
+  for (double x : {0.25, 0.5, 6.56, 145.0, 1.0 / 3.0, 1e-300, 1e300}) {
+    CAPTURE(x);
+    CHECK(from_um(x) == x * to_si("um"));
+    CHECK(from_nm(x) == x * to_si("nm"));
+    CHECK(from_MPa(x) == x * to_si("MPa"));
+    CHECK(from_um_per_s(x) == x * to_si("um/s"));
+    CHECK(from_pct(x) == x * to_si("%"));
+  }
+  // Out of SI: the reciprocal decimal power, within half an ulp of 1 / to_si (1 / 1e-9 is not
+  // the double 1e9, so the reciprocal is a constant of its own).
+  const struct {
+    double to_si, from_si;
+  } pairs[] = {{unit_factor::um, unit_factor::per_um},         {unit_factor::nm, unit_factor::per_nm},
+               {unit_factor::MPa, unit_factor::per_MPa},       {unit_factor::uN, unit_factor::per_uN},
+               {unit_factor::um_per_s, unit_factor::per_um_per_s}, {unit_factor::MPa_s, unit_factor::per_MPa_s},
+               {unit_factor::pct, unit_factor::per_pct}};
+  for (const auto& [into, out_of] : pairs) {
+    CAPTURE(into);
+    CHECK(std::fabs(into * out_of - 1.0) <= 2.3e-16);  // two roundings, each <= 2^-53 relative
+  }
+  CHECK(to_um(6.56e-6) == 6.56e-6 * 1e6);
+  CHECK(to_nm(145e-9) == 145e-9 * 1e9);
+  CHECK(to_MPa(0.3e6) == 0.3e6 * 1e-6);
+  CHECK(to_uN(5e-6) == 5e-6 * 1e6);
+  CHECK(to_pct(0.002) == 0.002 * 100.0);
+  // A round trip through the two decimal constants moves a value by at most an ulp.
+  for (double x : {0.25, 0.5, 6.56, 0.1, 0.7}) {
+    CHECK(std::fabs(to_um(from_um(x)) - x) <= std::nextafter(x, 2 * x) - x);
+    CHECK(std::fabs(to_nm(from_nm(x)) - x) <= std::nextafter(x, 2 * x) - x);
+  }
+}

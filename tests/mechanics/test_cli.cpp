@@ -159,8 +159,8 @@ TEST_CASE("correlate: writes the matrix `sample` reads, equal to the library's")
   MechanicalDrawOptions options;
   options.samples = 4000;
   options.seed = 3;
-  ThinShellParameters shell;
-  shell.probe_radius = 0.5e-6;
+  Instrument shell;
+  shell.probe_radius_m = 0.5e-6;
   const MechanicalCorrelation expected = mechanical_rank_correlation(options, shell, "test");
   CHECK((file.spearman - expected.spearman).cwiseAbs().maxCoeff() == 0.0);  // shortest round-trip text
   CHECK(run.out.find("burst (p d0 / (2 h E) > 1/e), dropped: " + std::to_string(expected.burst)) != std::string::npos);

@@ -17,9 +17,9 @@ using namespace growthuq;
 
 namespace {
 
-ThinShellParameters probe(double rho) {
-  ThinShellParameters parameters;
-  parameters.probe_radius = rho;
+Instrument probe(double rho) {
+  Instrument parameters;
+  parameters.probe_radius_m = rho;
   return parameters;
 }
 

@@ -34,9 +34,9 @@ double relative_error(double value, double reference) {
   return std::fabs(value - reference) / std::fabs(reference);
 }
 
-ThinShellParameters probe(double rho, double nu) {
-  ThinShellParameters parameters;
-  parameters.probe_radius = rho;
+Instrument probe(double rho, double nu) {
+  Instrument parameters;
+  parameters.probe_radius_m = rho;
   parameters.poisson_ratio = nu;
   return parameters;
 }
@@ -58,7 +58,7 @@ Unflagged closed_form(double k, double d, double d0, double h, double rho, doubl
 }  // namespace
 
 TEST_CASE("e < d/d0 < exp(1/(1 - nu^2)) is unstable_branch; d/d0 = e and below are ok") {
-  const ThinShellParameters parameters = probe(0.5 * um, 0.2);
+  const Instrument parameters = probe(0.5 * um, 0.2);
   const double d0 = 5 * um;
   const double top = std::exp(1 / 0.96);  // 2.8339363076941687 (mpmath): q = 1
   for (double lambda : {e * (1 + 1e-9), 2.72, 2.78, 2.8, top * (1 - 1e-12)}) {
@@ -104,7 +104,7 @@ TEST_CASE("just below e the inverse is ok and forward(inverse(k, d, d0, h)) repr
       const double lambda = e * (1 - below);
       CAPTURE(nu);
       CAPTURE(lambda);
-      const ThinShellParameters parameters = probe(0.5 * um, nu);
+      const Instrument parameters = probe(0.5 * um, nu);
       const double d0 = 5.35 * um;
       const double d = lambda * d0;
       const double h = 145 * nm;
@@ -124,7 +124,7 @@ TEST_CASE("just below e the inverse is ok and forward(inverse(k, d, d0, h)) repr
 
 TEST_CASE("nu = 0 has no unstable window: above e it is beyond_membrane_limit") {
   // q = (1 - 0) ln(lambda) = ln(lambda) exactly, and q >= 1 is checked before ln(lambda) > 1.
-  const ThinShellParameters parameters = probe(0.5 * um, 0.0);
+  const Instrument parameters = probe(0.5 * um, 0.0);
   const double d0 = 5 * um;
   std::size_t ok = 0;
   std::size_t beyond = 0;
@@ -167,7 +167,7 @@ TEST_CASE("in the window the forward model returns the W0 root, not d: W-1 gives
     const double h = log_uniform(engine, 20 * nm, 2 * um);
     const double rho = log_uniform(engine, 0.01 * um, 10 * um);
     const double d = lambda * d0;
-    const ThinShellParameters parameters = probe(rho, nu);
+    const Instrument parameters = probe(rho, nu);
     CAPTURE(i);
     CAPTURE(nu);
     CAPTURE(lambda);

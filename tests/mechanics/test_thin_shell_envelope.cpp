@@ -103,10 +103,10 @@ TEST_CASE("inverse evaluators over the envelope: a value or the status the model
         grid.push_back({2, 6 * um, 5 * um, -1 * nm, SampleStatus::invalid_input});
         grid.push_back({2, 6 * um, 5 * um, not_a_number, SampleStatus::invalid_input});
 
-        ThinShellParameters parameters;
-        parameters.probe_radius = rho;
+        Instrument parameters;
+        parameters.probe_radius_m = rho;
         parameters.poisson_ratio = nu;
-        parameters.sensor_stiffness = k_sys;
+        parameters.sensor_stiffness_N_per_m = k_sys;
         const ThinShellTurgor turgor(parameters, "sweep");
         const ThinShellModulus modulus;
         SampleBlock block(grid.size());
@@ -166,8 +166,8 @@ TEST_CASE("forward evaluator over the envelope: a value, burst exactly when c d0
   std::size_t burst = 0;
   for (double rho : {0.01 * um, 0.5 * um, 10 * um}) {
     for (double nu : {0.0, 0.2, 0.45}) {
-      ThinShellParameters parameters;
-      parameters.probe_radius = rho;
+      Instrument parameters;
+      parameters.probe_radius_m = rho;
       parameters.poisson_ratio = nu;
       const ThinShellForward forward(parameters, "sweep");
       std::vector<double> p, E, h, d0;

@@ -21,14 +21,14 @@ namespace {
 
 // Wild-type-like tube (published data, distributions/README.md): p = 0.3 MPa, d = 6.56 um,
 // h = 145 nm, rho = 0.5 um.
-const ShellGeometry tube{0.3e6, 6.56e-6, 145e-9, 0.5e-6, 0.2};
+const ShellGeometry tube{0.3e6, 6.56e-6, 145e-9, {0.5e-6, 0.2}};
 
 // Forward relation, Eqs. (M2), (M3) of src/mechanics/README.md:
 // k(E) = (3 pi / 4) p d phi(rho / alpha), alpha^2 = 3 p d^3 / (16 (2 E h / (1 - nu^2) - p d)).
 double stiffness(double E, const ShellGeometry& s) {
   const double alpha = std::sqrt(3.0 * s.turgor * std::pow(s.diameter, 3) /
-                                 (16.0 * (2.0 * E * s.thickness / (1.0 - s.poisson * s.poisson) - s.turgor * s.diameter)));
-  return 0.75 * std::numbers::pi * s.turgor * s.diameter * arnoldi_phi(s.probe_radius / alpha);
+                                 (16.0 * (2.0 * E * s.thickness / (1.0 - s.instrument.poisson_ratio * s.instrument.poisson_ratio) - s.turgor * s.diameter)));
+  return 0.75 * std::numbers::pi * s.turgor * s.diameter * arnoldi_phi(s.instrument.probe_radius_m / alpha);
 }
 
 // k_inf / k0 = 0.65, k0 = 3 N/m (wild-type stiffness), tau 0.2 s and 3 s.
@@ -64,7 +64,7 @@ TEST_CASE("modulus: inverts the forward Arnoldi relation across the envelope") {
     CHECK(relaxation_modulus(stiffness(E, tube), tube) == doctest::Approx(E).epsilon(1e-12));
   }
   ShellGeometry small_probe = tube;
-  small_probe.probe_radius = 0.05e-6;
+  small_probe.instrument.probe_radius_m = 0.05e-6;
   CHECK(relaxation_modulus(stiffness(40e6, small_probe), small_probe) == doctest::Approx(40e6).epsilon(1e-12));
   // k = 0: the membrane limit (1 - nu^2) p d / (2 h).
   CHECK(relaxation_modulus(0.0, tube) == doctest::Approx(0.96 * 0.3e6 * 6.56e-6 / (2 * 145e-9)).epsilon(1e-15));

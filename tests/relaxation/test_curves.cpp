@@ -99,8 +99,8 @@ TEST_CASE("curves: long format with a metadata file, curves interleaved") {
   CHECK(read[0].turgor == doctest::Approx(0.3e6));
   CHECK(read[0].diameter == doctest::Approx(6.5e-6));
   CHECK(read[0].thickness == doctest::Approx(145e-9));
-  CHECK(read[0].probe_radius == doctest::Approx(0.25e-6));
-  CHECK(read[1].probe_radius == doctest::Approx(0.5e-6));
+  CHECK(read[0].probe_radius_m == doctest::Approx(0.25e-6));
+  CHECK(read[1].probe_radius_m == doctest::Approx(0.5e-6));
 }
 
 TEST_CASE("curves: metadata repeated on every row, probe radius from the option") {
@@ -110,7 +110,7 @@ TEST_CASE("curves: metadata repeated on every row, probe radius from the option"
   const auto curves = folder.write("c.csv", text);
   const auto read = read_relaxation_curves(curves, "", 0.5e-6);
   REQUIRE(read.size() == 1);
-  CHECK(read[0].probe_radius == 0.5e-6);
+  CHECK(read[0].probe_radius_m == 0.5e-6);
   CHECK(error_of(curves, "").find("no rho_um column and no --rho-um") != std::string::npos);
   const auto changing = folder.write("d.csv", text + "a,0.2,3,1.5,0.31,6.5,145\n");
   CHECK(error_of(changing, "", 0.5e-6).find("d.csv:22: metadata of curve 'a' differ") != std::string::npos);

@@ -11,7 +11,7 @@
 namespace growthuq::testing {
 
 // `simulated`'s record with the tube's geometry; `Tube` is any type with turgor, diameter,
-// thickness and probe_radius in SI units (ShellGeometry, RelaxationTube).
+// thickness and instrument (probe radius) in SI units (ShellGeometry, RelaxationTube).
 template <class Tube>
 RelaxationCurve as_curve(const SimulatedCurve& simulated, const Tube& tube, std::string name) {
   return RelaxationCurve{.name = std::move(name),
@@ -22,7 +22,7 @@ RelaxationCurve as_curve(const SimulatedCurve& simulated, const Tube& tube, std:
                          .turgor = tube.turgor,
                          .diameter = tube.diameter,
                          .thickness = tube.thickness,
-                         .probe_radius = tube.probe_radius};
+                         .probe_radius_m = tube.instrument.probe_radius_m};
 }
 
 }  // namespace growthuq::testing

@@ -46,7 +46,7 @@ RelaxationTube wild_type_tube() {
   tube.turgor = 0.2528e6;
   tube.diameter = 6.56e-6;
   tube.thickness = 145e-9;
-  tube.probe_radius = 0.5e-6;
+  tube.instrument.probe_radius_m = 0.5e-6;
   tube.stiffness0 = 2.87;
   tube.tau_slow = 6.81;
   tube.tau_fast = 0.25;
@@ -103,7 +103,7 @@ CsvTable parse_table(const std::string& text) {
 
 TEST_CASE("synthetic tube: the step stiffness is the forward image of the stated E_r(t)") {
   const RelaxationTube tube = wild_type_tube();
-  const ShellGeometry shell{tube.turgor, tube.diameter, tube.thickness, tube.probe_radius, tube.poisson};
+  const ShellGeometry shell{tube.turgor, tube.diameter, tube.thickness, tube.instrument};
   CHECK(tube_step_stiffness(tube, 0.0) == doctest::Approx(tube.stiffness0).epsilon(1e-12));
   const double modulus0 = relaxation_modulus(tube.stiffness0, shell);
   // Mapped back to E_r through the inverse Arnoldi relation, the stiffness gives the stated
@@ -238,7 +238,7 @@ TEST_CASE("synth: the raw data set reads back as a raw line, its curves fit to t
   for (const SynthFile& file : files) std::ofstream(folder / file.name) << file.text;
 
   RawFitSettings fit_settings;
-  fit_settings.probe_radius = settings.probe_radius;
+  fit_settings.instrument.probe_radius_m = settings.instrument.probe_radius_m;
   const RawLineFit fit = fit_raw_line(read_raw_line_file((folder / "raw.ini").string()), fit_settings);
   CHECK(fit.raw.name == "wild_type");
   CHECK(fit.raw.variables() == std::vector<std::string>{"k", "d", "d0", "h", "v_exp", "tau", "einf"});

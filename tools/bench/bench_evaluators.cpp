@@ -120,8 +120,8 @@ int main(int argc, char** argv) try {
   }
   std::printf("%zu block(s) of up to %zu samples\n", blocks.size(), block_size);
 
-  ThinShellParameters shell;
-  shell.probe_radius = 0.5e-6;  // a typical CFM probe (src/mechanics/README.md: 0.1-2 um)
+  Instrument shell;
+  shell.probe_radius_m = 0.5e-6;  // a typical CFM probe (src/mechanics/README.md: 0.1-2 um)
   const ThinShellTurgor turgor(shell, "bench_evaluators");
   const ThinShellModulus modulus;
   const ViscosityEvaluator viscosity;

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "growthuq/mechanics/mechanical_correlation.hpp"
-#include "growthuq/mechanics/thin_shell.hpp"
+#include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/sampling/latin_hypercube.hpp"
 
 namespace growthuq {
@@ -63,7 +63,7 @@ struct Campaign {
   StratumPosition stratum_position = StratumPosition::random;
   std::size_t chunk_size = 4096;      // samples per unit of work handed to a process
   Fidelity fidelity = Fidelity::thin_shell;
-  ThinShellParameters instrument;     // probe radius (required), Poisson ratio, sensor stiffness
+  Instrument instrument;     // probe radius (required), Poisson ratio, sensor stiffness
   double yield_pressure = 0.0;        // p0 [Pa]
   std::string reference_line;         // calibrates kappa; required when v is an output
   MechanicalDrawOptions physics_correlation;  // p, E ranges and draw count for `physics` lines

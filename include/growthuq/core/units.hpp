@@ -9,6 +9,49 @@
 
 namespace growthuq {
 
+// Conversions between SI and the units written at the edges, for code that knows its unit at
+// compile time (a flag named --rho-um, a column named h_nm). Each is one multiplication by a
+// decimal power of ten, correctly rounded: into SI by the unit's factor (the `to_si` of the unit
+// table below, so from_um(x) == x * find_unit("um", ...).to_si), out of SI by the reciprocal
+// power written as its own decimal constant (1 / 1e-9 is not the double 1e9). A round trip may
+// therefore move a value by an ulp, as any decimal scaling does.
+namespace unit_factor {
+// Unit -> SI.
+inline constexpr double mm = 1e-3;
+inline constexpr double um = 1e-6;
+inline constexpr double nm = 1e-9;
+inline constexpr double kPa = 1e3;
+inline constexpr double MPa = 1e6;
+inline constexpr double uN = 1e-6;  // force, micronewton (force curves, set points)
+inline constexpr double um_per_s = 1e-6;
+inline constexpr double nm_per_s = 1e-9;
+inline constexpr double MPa_s = 1e6;
+inline constexpr double pct = 1e-2;
+// SI -> unit.
+inline constexpr double per_um = 1e6;
+inline constexpr double per_nm = 1e9;
+inline constexpr double per_MPa = 1e-6;
+inline constexpr double per_uN = 1e6;
+inline constexpr double per_um_per_s = 1e6;
+inline constexpr double per_MPa_s = 1e-6;
+inline constexpr double per_pct = 1e2;
+}  // namespace unit_factor
+
+constexpr double from_um(double um) { return um * unit_factor::um; }
+constexpr double from_nm(double nm) { return nm * unit_factor::nm; }
+constexpr double from_MPa(double MPa) { return MPa * unit_factor::MPa; }
+constexpr double from_uN(double uN) { return uN * unit_factor::uN; }
+constexpr double from_um_per_s(double um_per_s) { return um_per_s * unit_factor::um_per_s; }
+constexpr double from_pct(double pct) { return pct * unit_factor::pct; }
+
+constexpr double to_um(double m) { return m * unit_factor::per_um; }
+constexpr double to_nm(double m) { return m * unit_factor::per_nm; }
+constexpr double to_MPa(double Pa) { return Pa * unit_factor::per_MPa; }
+constexpr double to_uN(double N) { return N * unit_factor::per_uN; }
+constexpr double to_um_per_s(double m_per_s) { return m_per_s * unit_factor::per_um_per_s; }
+constexpr double to_MPa_s(double Pa_s) { return Pa_s * unit_factor::per_MPa_s; }
+constexpr double to_pct(double fraction) { return fraction * unit_factor::per_pct; }
+
 enum class Dimension { dimensionless, fraction, length, stiffness, pressure, time, velocity, viscosity };
 
 std::string_view to_string(Dimension dimension);

@@ -60,7 +60,7 @@ struct MechanicalCorrelation {
 // Draws, runs ThinShellForward and correlates the kept samples. InputError (location) when
 // fewer than 3 samples survive or a kept column is constant.
 MechanicalCorrelation mechanical_rank_correlation(const MechanicalDrawOptions& options,
-                                                  const ThinShellParameters& shell,
+                                                  const Instrument& shell,
                                                   std::string_view location);
 
 }  // namespace growthuq

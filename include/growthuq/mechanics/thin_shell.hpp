@@ -5,27 +5,10 @@
 // instead of NaN.
 #pragma once
 
-#include <limits>
-#include <string_view>
-
 #include "growthuq/evaluation/sample_status.hpp"
+#include "growthuq/mechanics/instrument.hpp"
 
 namespace growthuq {
-
-// What the instrument and the wall model need besides the per-tube measurements.
-struct ThinShellParameters {
-  // Probe radius rho [m]. Required: it dominates the answer (p falls ~2x from rho = 0.25 to
-  // 1 um), so there is no default; NaN until set, and validate() rejects it.
-  double probe_radius = std::numeric_limits<double>::quiet_NaN();
-  // Poisson ratio nu of the wall, in [0, 1); 0.2 as in the published FEM (distributions/README.md).
-  double poisson_ratio = 0.2;
-  // Sensor stiffness k_sys [N/m] in series with the tube, > 0; +inf (an ideal sensor) by default.
-  double sensor_stiffness = std::numeric_limits<double>::infinity();
-};
-
-// InputError("<location>", "<key> = '<value>': expected ...") naming the first bad parameter
-// (keys rho_um, nu, k_sys_N_per_m as users write them).
-void validate(const ThinShellParameters& parameters, std::string_view location);
 
 // Relation 2 inverted for turgor: needs k, d, d0 but not h.
 struct TurgorResult {
@@ -47,7 +30,7 @@ struct TurgorResult {
 // nu = 0 (q = ln(lambda)) every lambda > e is beyond_membrane_limit. ln(lambda) is computed as
 // log1p((d - d0)/d0), exact to rounding even at lambda = 1 + 1e-12.
 TurgorResult invert_turgor(double k_measured, double d, double d0,
-                           const ThinShellParameters& parameters) noexcept;
+                           const Instrument& parameters) noexcept;
 
 // Relation 1 solved for the modulus, given turgor: E = p d / (2 h ln lambda).
 struct ModulusResult {
@@ -73,6 +56,6 @@ struct ForwardResult {
 };
 
 ForwardResult thin_shell_forward(double p, double E, double h, double d0,
-                                 const ThinShellParameters& parameters) noexcept;
+                                 const Instrument& parameters) noexcept;
 
 }  // namespace growthuq

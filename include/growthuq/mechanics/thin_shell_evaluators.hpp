@@ -14,14 +14,14 @@ namespace growthuq {
 class ThinShellTurgor final : public Evaluator {
  public:
   // InputError (from validate, with `location`) when the parameters are invalid.
-  ThinShellTurgor(const ThinShellParameters& parameters, std::string_view location);
+  ThinShellTurgor(const Instrument& parameters, std::string_view location);
   std::string_view name() const override { return "thin_shell_turgor"; }
   std::vector<std::string> reads() const override { return {"k", "d", "d0"}; }
   std::vector<std::string> writes() const override { return {"lambda", "alpha", "phi", "p"}; }
   void evaluate(SampleBlock& block) const override;
 
  private:
-  ThinShellParameters parameters_;
+  Instrument parameters_;
 };
 
 class ThinShellModulus final : public Evaluator {
@@ -34,14 +34,14 @@ class ThinShellModulus final : public Evaluator {
 
 class ThinShellForward final : public Evaluator {
  public:
-  ThinShellForward(const ThinShellParameters& parameters, std::string_view location);
+  ThinShellForward(const Instrument& parameters, std::string_view location);
   std::string_view name() const override { return "thin_shell_forward"; }
   std::vector<std::string> reads() const override { return {"p", "E", "h", "d0"}; }
   std::vector<std::string> writes() const override { return {"d", "k"}; }
   void evaluate(SampleBlock& block) const override;
 
  private:
-  ThinShellParameters parameters_;
+  Instrument parameters_;
 };
 
 }  // namespace growthuq

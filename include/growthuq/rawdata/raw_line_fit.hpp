@@ -14,6 +14,7 @@
 
 #include "growthuq/distributions/fit.hpp"
 #include "growthuq/distributions/line_file.hpp"
+#include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/rawdata/raw_line_file.hpp"
 #include "growthuq/relaxation/analysis.hpp"
 #include "growthuq/relaxation/curves.hpp"
@@ -26,8 +27,9 @@ using CurveFitter =
     std::function<std::vector<CurveFit>(const std::vector<RelaxationCurve>& curves, const RelaxationOptions& options)>;
 
 struct RawFitSettings {
-  std::optional<double> probe_radius;  // m, for curves whose metadata have no rho_um column
-  double poisson = 0.2;                // nu of the wall, for E_r(t) (a campaign's instrument value)
+  // nu of the wall for E_r(t), and the probe radius of curves whose tube sheet has no rho_um
+  // column (NaN: every tube sheet must have one). The sensor stiffness is not used.
+  Instrument instrument;
   // Where the curve fits run (most of a raw line's fitting time): one after the other here when
   // empty; a campaign shares them out over its processes (campaign/shared_raw_fits.hpp).
   CurveFitter fit_curves;

@@ -13,7 +13,7 @@ namespace growthuq {
 
 struct RelaxationOptions {
   int terms = 2;                    // exponentials in the Prony series: 1, 2 or 3
-  double poisson = 0.2;             // nu of the wall (published FEM value)
+  double poisson_ratio = 0.2;       // nu of the wall: the instrument's (mechanics/instrument.hpp)
   bool ramp_aware = false;          // fit the ramp and the hold with the simulator
   double drop_ramp_multiple = 0.0;  // step fit only: ignore hold samples with t < this x ramp time
 };
@@ -54,6 +54,6 @@ CurveFit analyze_relaxation_curve(const RelaxationCurve& curve, const Relaxation
 // h, rho (relaxation_stiffness); NaN before the maximum, which the step fit does not model.
 // Ramp-aware fit: the fitted springs' ramp-and-hold force at every sample. All NaN for a fit
 // without parameters (e.g. a hold too short to fit).
-std::vector<double> fitted_force(const RelaxationCurve& curve, const CurveFit& fit, double poisson);
+std::vector<double> fitted_force(const RelaxationCurve& curve, const CurveFit& fit, double poisson_ratio);
 
 }  // namespace growthuq

@@ -20,20 +20,20 @@ struct RelaxationCurve {
   double turgor = 0.0;           // p (Pa)
   double diameter = 0.0;         // d, turgid (m)
   double thickness = 0.0;        // h (m)
-  double probe_radius = 0.0;     // rho (m)
+  double probe_radius_m = 0.0;   // rho, from the tube sheet or the instrument
 };
 
 // A curve needs this many samples (ramp and hold together) to be fitted at all.
 inline constexpr std::size_t minimum_curve_samples = 20;
 
 // Reads and validates the curves, in order of first appearance. `meta_path` empty: metadata
-// columns are read from the force file and must be constant within a curve. `probe_radius`
-// (m) is used when no rho_um column exists. InputError naming file and line for: a missing
+// columns are read from the force file and must be constant within a curve. `probe_radius_m`
+// is used when no rho_um column exists. InputError naming file and line for: a missing
 // column, a non-numeric cell, time not increasing within a curve, a negative force, fewer than
 // minimum_curve_samples samples, a curve without metadata (or metadata without a curve, or
 // twice), a metadata value that is not positive, no probe radius at all.
 std::vector<RelaxationCurve> read_relaxation_curves(const std::string& curves_path,
                                                     const std::string& meta_path,
-                                                    std::optional<double> probe_radius);
+                                                    std::optional<double> probe_radius_m);
 
 }  // namespace growthuq

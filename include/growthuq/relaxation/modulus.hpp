@@ -3,14 +3,15 @@
 // inverted at fixed p, d.
 #pragma once
 
+#include "growthuq/mechanics/instrument.hpp"
+
 namespace growthuq {
 
 struct ShellGeometry {
-  double turgor = 0.0;        // p (Pa)
-  double diameter = 0.0;      // d (m)
-  double thickness = 0.0;     // h (m)
-  double probe_radius = 0.0;  // rho (m)
-  double poisson = 0.2;       // nu
+  double turgor = 0.0;      // p (Pa)
+  double diameter = 0.0;    // d (m)
+  double thickness = 0.0;   // h (m)
+  Instrument instrument;    // rho and nu (the relaxation maps force through an ideal sensor: k_sys unused)
 };
 
 // E_r for a stiffness k >= 0 (N/m): phi = 4 k / (3 pi p d), x = phi^-1(phi), alpha = rho / x,

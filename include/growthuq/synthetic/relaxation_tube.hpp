@@ -17,6 +17,7 @@
 
 #include <cstdint>
 
+#include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/relaxation/simulator.hpp"
 
 namespace growthuq {
@@ -25,8 +26,7 @@ struct RelaxationTube {
   double turgor = 0.0;        // p (Pa)
   double diameter = 0.0;      // d (m)
   double thickness = 0.0;     // h (m)
-  double probe_radius = 0.0;  // rho (m)
-  double poisson = 0.2;       // nu
+  Instrument instrument{0.0, 0.2};  // rho (m) and nu of the measurement (an ideal sensor)
   double stiffness0 = 0.0;    // k(0) = k(E_r(0)) (N/m): the instantaneous stiffness
   double tau_slow = 0.0;      // s
   double tau_fast = 0.0;      // s, < tau_slow

@@ -33,7 +33,9 @@
 #include <string>
 #include <vector>
 
+#include "growthuq/core/units.hpp"
 #include "growthuq/distributions/line_file.hpp"
+#include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/relaxation/simulator.hpp"
 
 namespace growthuq {
@@ -47,8 +49,8 @@ struct SynthSettings {
   std::uint64_t seed = 1;
   CountRange tubes{20, 60};   // tubes per table and line, drawn uniformly in [low, high]
   CountRange curves{20, 40};  // relaxation curves per line
-  double probe_radius = 0.5e-6;  // rho (m), written to the tube sheet
-  double poisson = 0.2;
+  // rho (0.5 um, written to the tube sheet) and nu; an ideal sensor (k_sys is not simulated).
+  Instrument instrument{from_um(0.5), 0.2};
   // 100 um/s to 5 uN (a ramp of ~17 ms on a wild-type tube), a 30 s hold (tau_slow reaches
   // ~17 s at the wild type's 99th percentile; a fit needs the record to outlast it), exported
   // at 50 Hz: 1500 samples, which determine tau_slow to ~0.5-1 % at 0.2 % noise
