@@ -47,28 +47,50 @@ Points effective_points(const BendingStencil& stencil, const Vec18& x) {
   return p;
 }
 
-bool all_interior(const BendingStencil& stencil) {
-  return stencil.edges[0] == EdgeKind::interior && stencil.edges[1] == EdgeKind::interior &&
-         stencil.edges[2] == EdgeKind::interior;
-}
+// The derivatives with respect to the effective points p, carried back to the stencil's dofs
+// x (p = T x, so g_x = T^T g_p and H_x = T^T H_p T) block by block: the slot 3 + i of a mirror
+// edge is R x_i (R = diag(1, -1, 1)), that of a free edge x_j + x_k - x_i; the slot itself then
+// carries nothing.
+struct Source {
+  int vertex;
+  double sign;  // the source's matrix is sign * I, or R for a mirror edge
+};
 
-// The linear map x -> p (18 x 18) for stencils with mirror or free edges.
-Mat18 effective_map(const BendingStencil& stencil) {
-  Mat18 t = Mat18::Identity();
-  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+void carry_back(const BendingStencil& stencil, Vec18* gradient, Mat18* hessian) {
+  const Eigen::Array3d mirror(1.0, -1.0, 1.0);
   for (int i = 0; i < 3; ++i) {
     if (stencil.edges[i] == EdgeKind::interior) continue;
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    t.block<3, 3>(9 + 3 * i, 9 + 3 * i).setZero();
-    if (stencil.edges[i] == EdgeKind::mirror) {
-      t.block<3, 3>(9 + 3 * i, 3 * i) = Eigen::Vector3d(1.0, -1.0, 1.0).asDiagonal();
-    } else {
-      t.block<3, 3>(9 + 3 * i, 3 * i) = -identity;
-      t.block<3, 3>(9 + 3 * i, 3 * j) = identity;
-      t.block<3, 3>(9 + 3 * i, 3 * k) = identity;
+    const int slot = 9 + 3 * i;
+    const bool is_mirror = stencil.edges[i] == EdgeKind::mirror;
+    const std::array<Source, 3> sources = {Source{i, is_mirror ? 1.0 : -1.0}, Source{(i + 1) % 3, 1.0},
+                                           Source{(i + 2) % 3, 1.0}};
+    const int count = is_mirror ? 1 : 3;
+    if (gradient != nullptr) {
+      for (int c = 0; c < count; ++c) {
+        const Eigen::Vector3d share = gradient->segment<3>(slot);
+        gradient->segment<3>(3 * sources[c].vertex) +=
+            is_mirror ? Eigen::Vector3d(mirror * share.array()) : Eigen::Vector3d(sources[c].sign * share);
+      }
+      gradient->segment<3>(slot).setZero();
+    }
+    if (hessian != nullptr) {
+      // Columns first (every row, the slot's own included), then rows; then clear the slot.
+      for (int c = 0; c < count; ++c) {
+        const Eigen::Matrix<double, 18, 3> column = hessian->block<18, 3>(0, slot);
+        hessian->block<18, 3>(0, 3 * sources[c].vertex) +=
+            is_mirror ? Eigen::Matrix<double, 18, 3>(column * mirror.matrix().asDiagonal())
+                      : Eigen::Matrix<double, 18, 3>(sources[c].sign * column);
+      }
+      for (int c = 0; c < count; ++c) {
+        const Eigen::Matrix<double, 3, 18> row = hessian->block<3, 18>(slot, 0);
+        hessian->block<3, 18>(3 * sources[c].vertex, 0) +=
+            is_mirror ? Eigen::Matrix<double, 3, 18>(mirror.matrix().asDiagonal() * row)
+                      : Eigen::Matrix<double, 3, 18>(sources[c].sign * row);
+      }
+      hessian->block<18, 3>(0, slot).setZero();
+      hessian->block<3, 18>(slot, 0).setZero();
     }
   }
-  return t;
 }
 
 // Second fundamental form (11, 22, 12) of the interpolant with the face normal.
@@ -177,13 +199,11 @@ double bending_energy(const WallMaterial& material, double bending_thickness, co
       jacobian.block<1, 3>(a, 3 * k) = row.transpose();
     }
   }
-  const bool mapped = !all_interior(stencil);
-  if (gradient != nullptr) {
-    const Vec18 gp = jacobian.transpose() * sigma;
-    *gradient = mapped ? Vec18(effective_map(stencil).transpose() * gp) : gp;
-  }
+  if (gradient != nullptr) gradient->noalias() = jacobian.transpose() * sigma;
   if (hessian != nullptr) {
-    Mat18 h = reference.area * (jacobian.transpose() * d * jacobian);
+    Mat18& h = *hessian;
+    const Eigen::Matrix<double, 3, 18> weighted = reference.area * (d * jacobian);
+    h.noalias() = jacobian.transpose() * weighted;
     // Stress-weighted combinations: G = sum sigma_ab g_ab, fit_sigma(k) = sum sigma_ab fit(ab, k).
     Eigen::Vector3d big_g = Eigen::Vector3d::Zero();
     for (int a = 0; a < 3; ++a) big_g += sigma(a) * g[a];
@@ -210,13 +230,8 @@ double bending_energy(const WallMaterial& material, double bending_thickness, co
     h.block<3, 3>(3, 6) += k_cross;
     h.block<3, 3>(6, 0) += k_cross;
     h.block<3, 3>(6, 3) -= k_cross;
-    if (mapped) {
-      const Mat18 t = effective_map(stencil);
-      *hessian = t.transpose() * h * t;
-    } else {
-      *hessian = h;
-    }
   }
+  carry_back(stencil, gradient, hessian);
   return energy;
 }
 
