@@ -18,14 +18,14 @@ std::string describe(NewtonStatus status) {
 }
 
 // The start of a step's Newton iterations: nodes that the obstacles' new positions put inside
-// them, or that lie within a thin band of their surfaces, are placed at a penetration of twice
-// the penalty's smoothing (radially for a sphere, along the normal for a plane). Otherwise the
+// them, or that lie within a thin band of their surfaces, are placed at a penetration of the
+// band's width (at least twice the penalty's smoothing) (radially for a sphere, along the normal for a plane). Otherwise the
 // first Newton steps would fight penalty forces of the whole step's motion, and a node just
 // touching (zero penetration, where the penalty's curvature vanishes) would be invisible to the
 // Newton model: a tube resting on the substrate would be free to swing through it.
-void project_out_of_obstacles(const ShellAssembly& assembly, Eigen::Matrix3Xd& x) {
+void project_out_of_obstacles(const ShellAssembly& assembly, double band, Eigen::Matrix3Xd& x) {
   const ShellLoads& loads = assembly.loads();
-  const double margin = 2 * loads.penalty.smoothing;
+  const double margin = std::max(2 * loads.penalty.smoothing, band);
   for (Eigen::Index v = 0; v < x.cols(); ++v) {
     Eigen::Vector3d p = x.col(v);
     for (const RigidSphere& sphere : loads.spheres) {
@@ -67,7 +67,7 @@ EquilibriumResult solve_equilibrium(ShellAssembly& assembly, NewtonSolver& solve
     set_loads(t_next, assembly.loads());
     trial = x;
     if (previous_dt > 0) trial += (step / previous_dt) * previous_move;  // linear predictor
-    project_out_of_obstacles(assembly, trial);
+    project_out_of_obstacles(assembly, options.contact_band, trial);
     NewtonReport report = solver.minimise(trial, options.newton);
     result.newton_iterations += report.iterations;
     bool converged = report.status == NewtonStatus::converged;
@@ -107,7 +107,7 @@ EquilibriumResult solve_equilibrium(ShellAssembly& assembly, NewtonSolver& solve
     result.reached = t;
     ++result.steps;
     // Grow the step after an easy convergence, up to the cap.
-    if (report.iterations <= 4) dt = std::min(options.max_step, 1.5 * step);
+    if (report.iterations <= options.easy_iterations) dt = std::min(options.max_step, 1.5 * step);
     else dt = std::min(options.max_step, step);
     if (on_step && !on_step(t, x)) return result;
   }

@@ -20,9 +20,11 @@ struct LoadSteppingOptions {
   double max_step = 0.25;
   double min_step = 1.0 / 4096;
   int max_attempts = 200;    // converged steps plus failed ones
+  int easy_iterations = 6;   // a step converged within these lets the next one grow 1.5 times
   NewtonOptions newton;
   double penetration_tolerance = 0.0;  // absolute (/ d0); 0: the penalty is not controlled
   int max_penalty_raises = 10;
+  double contact_band = 0.0;  // nodes closer than this to an obstacle start a step touching it
 };
 
 struct EquilibriumResult {

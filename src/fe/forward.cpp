@@ -217,8 +217,8 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
     return result;
   }
   // The mesh is finest where the probe will press: at first where the reference point a behind
-  // the apex lies, then (one remeshing, if inflation moved the turgid target by more than a
-  // quarter of the fine region) where inflation actually brings it.
+  // the apex lies, then (one remeshing, if inflation moved the turgid target by more than half
+  // the fine region's radius) where inflation actually brings it.
   const double tolerance = 1e-3 * p.probe_radius;  // the stated bound on any node's penetration
   const MeshSizing sizing = mesh_sizing(p.mesh, p.probe_radius, p.thickness);
   double focus_distance = p.probe_distance;
@@ -230,9 +230,12 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
                        "(far field, hoop stretch " + std::to_string(far.hoop_stretch) + " there)";
       return result;
     }
-    // First guess of the reference distance the probe will press at: the cap inflates to about
-    // the cylinder's turgid radius, the cylinder between cap and probe stretches axially.
-    const double cap = 0.5 * far.hoop_stretch;
+    // First guess of the reference distance the probe will press at: the cylinder between cap
+    // and probe stretches axially; the cap, under half the cylinder's hoop tension, stretches
+    // about as a sphere, whose small-strain stretch is (1 - nu)/(2 - nu) of the cylinder's hoop
+    // strain (Timoshenko and Woinowsky-Krieger 1959, membrane theory; measured within 0.02 d0
+    // of the inflated state's own point at p/E = 0.005, h0/d0 = 0.02).
+    const double cap = 0.5 * std::exp(std::log(far.hoop_stretch) * (1 - p.poisson) / (2 - p.poisson));
     focus_distance = p.probe_distance >= cap ? 0.5 + (p.probe_distance - cap) / far.axial_stretch
                                              : p.probe_distance / far.hoop_stretch;
   }
@@ -250,7 +253,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
       problem.bending = p.bending;
       problem.mirror_y0 = setup.half;
       problem.fixed = setup.fixed;
-      problem.loads.penalty = PenaltyLaw{1e3 * p.thickness, 0.25 * tolerance};
+      problem.loads.penalty = PenaltyLaw{1e3 * p.thickness, 0.0};
       solver.reset();
       assembly.emplace(std::move(problem));
     } catch (const InputError& e) {
@@ -278,7 +281,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
     }
     if (p.geometry != Geometry::tube || !indent) break;
     const double actual = reference_distance(p, setup.mesh, x, p.probe_distance);
-    if (std::fabs(actual - focus_distance) <= 0.25 * sizing.fine_radius) break;
+    if (std::fabs(actual - focus_distance) <= 0.5 * sizing.fine_radius) break;
     focus_distance = actual;
     add_timing(solver->timing(), timing);  // the discarded pass
   }
@@ -326,6 +329,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
         radius = std::max(radius, std::hypot(state(1, v) - probe.centre.y(), state(2, v) - probe.centre.z()));
       }
     }
+    result.max_penetration = std::max(result.max_penetration, contact.max_penetration);
     result.depth.push_back(t * p.max_depth);
     result.force.push_back(mirror_factor * contact.sphere_force.front().x());
     result.contact_radius.push_back(radius);
@@ -336,9 +340,10 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
     return true;
   };
   LoadSteppingOptions indentation;
-  indentation.first_step = 1.0 / 12;
+  indentation.first_step = 1.0 / 48;  // the contact forms gently, then the steps grow
   indentation.max_step = 1.0 / 12;
   indentation.penetration_tolerance = tolerance;
+  indentation.contact_band = 0.1 * tolerance;
   // A Newton step may not carry a node across the probe: the line search sees only the energy
   // at the step's end, where a wall that has jumped past the probe has none left in contact.
   indentation.newton.max_step = 0.25 * rho;

@@ -42,6 +42,7 @@ struct ForwardResult {
   double turgid_diameter = 0.0;    // / d0, far from tip and ends (tube), or sphere diameter
   double axial_stretch = 0.0;      // tube only
   double thickness_stretch = 0.0;  // h/h0 there
+  double max_penetration = 0.0;    // deepest node in the probe or substrate over the path, / d0
   int newton_iterations = 0;
   double seconds_assembly = 0, seconds_factorisation = 0, seconds_contact = 0;
   // Final state for field output: mesh, deformed positions, per-face stresses.

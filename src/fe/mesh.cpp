@@ -220,7 +220,7 @@ MeshSizing mesh_sizing(MeshLevel level, double probe_radius, double thickness) {
   s.finest = 0.5 * scale * std::min(probe_radius, bending_length);
   s.fine_radius = std::max(2 * probe_radius, 0.25 * bending_length);
   s.grading = 0.5 * scale;
-  s.coarsest = std::max(0.2 * scale, s.finest);
+  s.coarsest = std::max(0.14 * scale, s.finest);
   return s;
 }
 
