@@ -13,6 +13,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <cmath>
+#include <limits>
 
 #include "growthuq/core/error.hpp"
 
@@ -175,6 +176,7 @@ double bending_energy(const WallMaterial& material, double bending_thickness, co
   const Eigen::Vector3d e1 = p[1] - p[0], e2 = p[2] - p[0];
   const Eigen::Vector3d m = e1.cross(e2);
   const double r = m.norm();
+  if (!(r > 0.0)) return std::numeric_limits<double>::infinity();  // a collapsed face has no normal
   const Eigen::Vector3d n = m / r;
   std::array<Eigen::Vector3d, 3> g;
   Eigen::Vector3d v;

@@ -63,6 +63,7 @@ BendingReference make_bending_reference(const BendingStencil& stencil, const Eig
 
 // Bending energy area * W of the face; gradient and Hessian optional (nullptr = not wanted),
 // exact. Uses material.young and material.poisson; t = bending_thickness (h0/d0 in the solver).
+// A deformed face collapsed to zero area returns +infinity (gradient and Hessian untouched).
 double bending_energy(const WallMaterial& material, double bending_thickness, const BendingStencil& stencil,
                       const BendingReference& reference, const Eigen::Matrix<double, 18, 1>& x,
                       Eigen::Matrix<double, 18, 1>* gradient, Eigen::Matrix<double, 18, 18>* hessian);

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <memory>
 
+#include "core/gsl_errors.hpp"
+
 namespace growthuq::fe {
 
 namespace {
@@ -66,6 +68,7 @@ FarFieldState far_field_pressure_maximum(FarFieldLaw law, double nu) {
     return far_field_state(law, std::exp(1.0 / (1.0 + beta)), nu);
   }
   // St-VK: scan ln(l) on [0, ln 20] for an interior maximum, refine it with GSL's Brent minimiser.
+  detail::gsl_errors_return();
   std::pair<FarFieldLaw, double> params{law, nu};
   constexpr int samples = 400;
   int best = 1;
@@ -100,6 +103,7 @@ FarFieldInflation far_field_inflation(FarFieldLaw law, double pressure_over_E, d
   if (target > peak.pressure_group) return {peak.hoop_stretch, peak.axial_stretch, peak.thickness_stretch, true};
   if (target == peak.pressure_group) return {peak.hoop_stretch, peak.axial_stretch, peak.thickness_stretch, false};
   // G rises from 0 at l = 1 to its maximum: one root in (1, l_peak), bracketed.
+  detail::gsl_errors_return();
   struct Shifted {
     std::pair<FarFieldLaw, double> params;
     double target;

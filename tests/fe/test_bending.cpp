@@ -531,3 +531,15 @@ TEST_CASE("bending: a stencil on one conic is an input error") {
   CHECK_THROWS_AS(make_bending_reference(stencil_of(EdgeKind::interior, EdgeKind::interior, EdgeKind::interior), X),
                   growthuq::InputError);
 }
+
+TEST_CASE("bending: a face collapsed to zero area (two vertices coincide) has infinite energy") {
+  std::mt19937_64 rng(41);
+  const BendingStencil stencil = stencil_of(EdgeKind::interior, EdgeKind::interior, EdgeKind::interior);
+  const Vec18 X = surface_stencil(rng, -1);
+  const BendingReference ref = make_bending_reference(stencil, X);
+  Vec18 x = X;
+  x.segment<3>(6) = X.segment<3>(0);  // v2 onto v0: the normal's cross product is exactly zero
+  Vec18 g = Vec18::Constant(7.0);
+  CHECK(std::isinf(bending_energy(wall(), 0.05, stencil, ref, x, &g, nullptr)));
+  CHECK(g(0) == 7.0);
+}
