@@ -40,8 +40,8 @@ std::string check(const ForwardProblem& p, FeStatus& status) {
   if (!(p.thickness > 0 && p.thickness < 0.5)) {
     return "thickness h0/d0 = " + std::to_string(p.thickness) + ": expected in (0, 0.5)";
   }
-  if (!(p.poisson > -1 && p.poisson < 0.5)) {
-    return "poisson = " + std::to_string(p.poisson) + ": expected in (-1, 0.5)";
+  if (!(p.poisson >= 0 && p.poisson < 0.5)) {
+    return "poisson = " + std::to_string(p.poisson) + ": expected in [0, 0.5)";
   }
   if (!(p.probe_radius > 0)) return "probe radius rho/d0 = " + std::to_string(p.probe_radius) + ": expected > 0";
   if (!(p.max_depth >= 0 && p.max_depth < 0.5)) {
