@@ -85,6 +85,7 @@ Inflated inflate(const ShellFeMeasurement& m, const ThinShellParameters& instrum
   bool failed = false;
   double r = residual(u, thickness, failed);
   if (failed) return inflated;
+  inverse.far_field_diameter_error = r;
   // The far field's slope d(ln lambda)/d(ln P), by a central difference of the closed solution.
   const auto far_lambda = [&](double at) {
     return fe::far_field_inflation(fe::to_far_field_law(options.law), std::exp(at) * far.thickness, far.thickness, nu).hoop_stretch;

@@ -140,6 +140,8 @@ struct ShellFeInverse {
   double unstressed_thickness = 0.0;  // h0, m
   double far_field_pressure_over_young = 0.0;  // p/E of the far-field inflation alone
   int inflation_solves = 0;           // finite-element inflations of the refinement
+  double far_field_diameter_error = 0.0;  // the mesh's inflated d at the far field's p/E over the
+                                          // measured d, minus 1 (what the refinement corrected)
   double closed_form_young = 0.0;     // the thin-shell inverse's E (the root's first estimate), Pa
   double fitted_stiffness = 0.0;      // k of the model at (p, E) over the window, N/m
   int newton_iterations = 0;
