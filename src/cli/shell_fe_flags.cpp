@@ -32,7 +32,8 @@ void ShellFeFlags::declare(po::options_description& options) {
                                          "(closed, of diameter d0) or file (--mesh-file)")
       ("mesh-file", po::value(&mesh_file), "closed triangulated surface (Wavefront .obj or .off), lengths in units "
                                            "of d0 (--geometry file only)")
-      ("mesh", po::value(&mesh), "mesh density: coarse, default or fine (each sqrt(2) finer than the one before)")
+      ("mesh", po::value(&mesh), "mesh density: coarse, default or fine (omitted: default; each level sqrt(2) finer "
+                                 "than the one before)")
       ("substrate", po::value(&substrate), "rigid frictionless plane under the tube, opposite the probe: on (default) or off")
       ("bending", po::value(&bending), "Kirchhoff-Love bending: on (default) or off (membrane only)")
       ("half-model", po::value(&half_model), "mirror plane through the tube axis and the probe axis: on (default) or off")
@@ -44,7 +45,7 @@ void ShellFeFlags::declare(po::options_description& options) {
 void InstrumentFlags::declare(po::options_description& options) {
   options.add_options()
       ("rho-um", po::value(&rho_um), "probe radius [um] (required: it dominates k, and has no default)")
-      ("nu", po::value(&nu), "Poisson ratio of the wall (default 0.2, as in the published FEM)")
+      ("nu", po::value(&nu), "Poisson ratio of the wall, in [0, 0.5) (default 0.2, as in the published FEM)")
       ("k-sys", po::value(&k_sys), "sensor stiffness [N/m] in series with the tube (default: ideal)");
 }
 

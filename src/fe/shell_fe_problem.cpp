@@ -114,9 +114,10 @@ double hoop_root(FarFieldLaw law, double target, double thickness, double poisso
     status = gsl_root_test_interval(gsl_root_fsolver_x_lower(solver.get()), gsl_root_fsolver_x_upper(solver.get()), 1e-12, 0.0);
   }
   if (status != GSL_SUCCESS) return std::nan("");
-  // A burst at the root itself (the stretch is the burst limit) is no state.
+  // Brent also converges onto the jump where the wall bursts (the mismatch leaps from below 0
+  // to the burst's +1): a stretch beyond the burst limit is no state.
   const double root = gsl_root_fsolver_root(solver.get());
-  return hoop_mismatch(root, &problem) == 1.0 ? std::nan("") : std::exp(root);
+  return std::abs(hoop_mismatch(root, &problem)) <= 1e-9 * target ? std::exp(root) : std::nan("");
 }
 
 }  // namespace
