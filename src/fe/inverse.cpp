@@ -51,21 +51,27 @@ Inflated inflate(const ShellFeMeasurement& m, const ThinShellParameters& instrum
   Inflated inflated;
   const double d0 = m.plasmolysed_diameter, lambda = m.diameter / d0, turgid = m.thickness / d0;
   const double nu = instrument.poisson_ratio;
-  const fe::FarFieldState far = fe::far_field_state(options.law, lambda, turgid, nu);
-  if (!far.found) {
+  // FE1's closed-form far-field inverse: the membrane state depends on p/E and h0/d0 only
+  // through G = (p/E)/(h0/d0), and G follows explicitly from the hoop stretch.
+  const fe::FarFieldInverse far = fe::far_field_inverse(fe::to_far_field_law(options.law), lambda, turgid, nu);
+  if (far.status != fe::FarFieldInverseStatus::ok) {
     inflated.status = ShellFeStatus::no_inflation_state;
-    inflated.message = "no pressure below burst gives d/d0 = " + format_double(lambda) + " in the far field";
+    inflated.message = std::string("far field at d/d0 = ") + format_double(lambda) + ": " +
+                       (far.status == fe::FarFieldInverseStatus::beyond_pressure_maximum ? "past the pressure maximum (burst)"
+                        : far.status == fe::FarFieldInverseStatus::thickness_collapsed
+                            ? "the plane-stress thickness has vanished"
+                            : "no positive pressure gives it");
     return inflated;
   }
-  inverse.far_field_pressure_over_young = far.pressure_over_young;
-  inflated.pressure = far.pressure_over_young;
-  inflated.thickness = far.thickness;
+  inverse.far_field_pressure_over_young = far.pressure_over_E;
+  inflated.pressure = far.pressure_over_E;
+  inflated.thickness = far.h0_over_d0;
   if (!std::isfinite(options.inflation_tolerance)) return inflated;
 
   const bool tube = options.geometry == ShellFeGeometry::tube;
   // State at u = ln P: thickness from the far field (tube) or the last inflation's stretch.
-  double u = std::log(far.pressure_over_young / far.thickness);
-  double thickness = far.thickness;
+  double u = std::log(far.pressure_over_E / far.h0_over_d0);
+  double thickness = far.h0_over_d0;
   const auto residual = [&](double at, double& h0, bool& failed) {
     if (tube) h0 = unstressed_at(options.law, std::exp(at), turgid, nu);
     problem.pressure = std::exp(at) * h0;
@@ -88,7 +94,7 @@ Inflated inflate(const ShellFeMeasurement& m, const ThinShellParameters& instrum
   inverse.far_field_diameter_error = r;
   // The far field's slope d(ln lambda)/d(ln P), by a central difference of the closed solution.
   const auto far_lambda = [&](double at) {
-    return fe::far_field_inflation(fe::to_far_field_law(options.law), std::exp(at) * far.thickness, far.thickness, nu).hoop_stretch;
+    return fe::far_field_inflation(fe::to_far_field_law(options.law), std::exp(at) * far.h0_over_d0, far.h0_over_d0, nu).hoop_stretch;
   };
   double slope = (std::log(far_lambda(u + 1e-4)) - std::log(far_lambda(u - 1e-4))) / 2e-4;
   if (!(std::isfinite(slope) && slope > 0)) slope = 1.0;

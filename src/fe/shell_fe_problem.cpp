@@ -1,12 +1,7 @@
 #include "shell_fe_problem.hpp"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
-
 #include <cmath>
-#include <memory>
 
-#include "core/gsl_errors.hpp"
 #include "fe/far_field.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -62,89 +57,6 @@ MaterialLaw to_material_law(ShellFeLaw law) {
 
 FarFieldLaw to_far_field_law(ShellFeLaw law) {
   return law == ShellFeLaw::hencky ? FarFieldLaw::hencky : FarFieldLaw::saint_venant_kirchhoff;
-}
-
-namespace {
-
-struct HoopProblem {
-  FarFieldLaw law;
-  double thickness, poisson, target;
-};
-
-// Hoop stretch minus its target at P = exp(log_p) (p/E = P h0/d0); a burst state counts as
-// "too far" (+1), so the bracket's upper end may be a burst.
-double hoop_mismatch(double log_p, void* parameters) {
-  const auto& problem = *static_cast<const HoopProblem*>(parameters);
-  const double p = std::exp(log_p) * problem.thickness;
-  const FarFieldInflation state = far_field_inflation(problem.law, p, problem.thickness, problem.poisson);
-  if (state.burst || !std::isfinite(state.hoop_stretch)) return 1.0;
-  return state.hoop_stretch - problem.target;
-}
-
-// The P whose hoop stretch is `target` at h0/d0 = `thickness`; NaN when none below burst.
-double hoop_root(FarFieldLaw law, double target, double thickness, double poisson) {
-  HoopProblem problem{law, thickness, poisson, target};
-  // ln(lambda) ~ P / 2 for a small stretch (hoop tension P/2 in E h0 units): start there and
-  // bracket by factors of 2 (down for a mismatch above 0, up below).
-  double lower = std::log(std::max(2.0 * std::log(target), 1e-300));
-  double f_lower = hoop_mismatch(lower, &problem);
-  double upper = lower, f_upper = f_lower;
-  for (int i = 0; f_lower > 0 && i < 2000; ++i) {
-    upper = lower;
-    f_upper = f_lower;
-    lower -= 0.6931471805599453;
-    f_lower = hoop_mismatch(lower, &problem);
-  }
-  for (int i = 0; f_upper < 0 && i < 200; ++i) {
-    lower = upper;
-    f_lower = f_upper;
-    upper += 0.6931471805599453;
-    f_upper = hoop_mismatch(upper, &problem);
-  }
-  if (!(f_lower <= 0 && f_upper >= 0)) return std::nan("");
-  if (f_lower == 0) return std::exp(lower);
-  detail::gsl_errors_return();
-  gsl_function function{&hoop_mismatch, &problem};
-  const std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
-      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
-  gsl_root_fsolver_set(solver.get(), &function, lower, upper);
-  int status = GSL_CONTINUE;
-  for (int i = 0; status == GSL_CONTINUE && i < 200; ++i) {
-    if (gsl_root_fsolver_iterate(solver.get()) != GSL_SUCCESS) return std::nan("");
-    status = gsl_root_test_interval(gsl_root_fsolver_x_lower(solver.get()), gsl_root_fsolver_x_upper(solver.get()), 1e-12, 0.0);
-  }
-  if (status != GSL_SUCCESS) return std::nan("");
-  // Brent also converges onto the jump where the wall bursts (the mismatch leaps from below 0
-  // to the burst's +1): a stretch beyond the burst limit is no state.
-  const double root = gsl_root_fsolver_root(solver.get());
-  return std::abs(hoop_mismatch(root, &problem)) <= 1e-9 * target ? std::exp(root) : std::nan("");
-}
-
-}  // namespace
-
-FarFieldState far_field_state(ShellFeLaw law, double hoop_stretch, double turgid_thickness, double poisson) {
-  FarFieldState state;
-  if (!(hoop_stretch > 1.0 && std::isfinite(hoop_stretch) && turgid_thickness > 0 && std::isfinite(turgid_thickness))) {
-    return state;
-  }
-  const FarFieldLaw far_law = to_far_field_law(law);
-  double thickness = turgid_thickness;
-  for (int pass = 0; pass < 50; ++pass) {
-    const double p_over_t = hoop_root(far_law, hoop_stretch, thickness, poisson);
-    if (!std::isfinite(p_over_t)) return state;
-    const FarFieldInflation inflated = far_field_inflation(far_law, p_over_t * thickness, thickness, poisson);
-    const double next = turgid_thickness / inflated.thickness_stretch;
-    state.pressure_over_young = p_over_t * next;
-    state.thickness = next;
-    state.thickness_stretch = inflated.thickness_stretch;
-    state.axial_stretch = inflated.axial_stretch;
-    if (std::abs(next - thickness) <= 1e-13 * next) {
-      state.found = true;
-      return state;
-    }
-    thickness = next;
-  }
-  return state;
 }
 
 double far_field_unstressed_thickness(ShellFeLaw law, double pressure_over_young, double turgid_thickness,

@@ -23,20 +23,6 @@ ShellFeStatus to_shell_fe_status(FeStatus status);
 MaterialLaw to_material_law(ShellFeLaw law);
 FarFieldLaw to_far_field_law(ShellFeLaw law);
 
-// The far-field (tube) state whose turgid hoop stretch is `hoop_stretch` at turgid thickness
-// h/d0 = `turgid_thickness`: p/E and h0/d0. A membrane far field depends on p/E and h0/d0 only
-// through P = (p/E)/(h0/d0) (hoop tension p d / 2 = sigma h), so this is a 1-D root in P on
-// the hoop stretch (GSL Brent, relative width 1e-12), with h0 = h / lambda3 repeated to a fixed
-// point (lambda3 depends on P alone, so it settles in one or two passes).
-struct FarFieldState {
-  bool found = false;             // false: no pressure below burst gives that stretch
-  double pressure_over_young = 0.0;
-  double thickness = 0.0;         // h0 / d0
-  double thickness_stretch = 0.0;
-  double axial_stretch = 0.0;
-};
-FarFieldState far_field_state(ShellFeLaw law, double hoop_stretch, double turgid_thickness, double poisson);
-
 // h0/d0 for a turgid h/d0 at p/E in the far field: h0 = h / lambda3(p/E, h0/d0), a fixed
 // point; 0 when the wall bursts.
 double far_field_unstressed_thickness(ShellFeLaw law, double pressure_over_young, double turgid_thickness,
