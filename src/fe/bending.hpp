@@ -12,10 +12,13 @@
 //   W = B/2 [ (1 - nu) tr(M^2) + nu (tr M)^2 ],  M = a0^-1 (II - II0),  B = E t^3 / (12 (1 - nu^2)),
 // a0 = I the reference metric in xi (II0 the same construction on the reference positions).
 // The quadratic interpolant reproduces every quadratic surface exactly, so M is consistent on
-// any mesh (first order in the mesh size on irregular meshes; measured in test_bending.cpp),
-// unlike dihedral-angle energies (Grinspun et al. 2003) or mid-edge normals averaged from the two
-// faces, which are exact only on regular meshes. It is invariant under rigid motions and zero for
-// any in-plane deformation of a flat patch.
+// any mesh, irregular or graded (test_bending.cpp measures it on jittered meshes: inflating a
+// curved cylinder or sphere reference and bending a flat patch into a cylinder converge at
+// second order in the mean error per face; the non-isometric bending of a flat patch onto a sphere at first order
+// per face and second order in the patch's total energy). Dihedral-angle energies (Grinspun et
+// al. 2003) and mid-edge normals averaged from the two faces, by contrast, depend on the mesh's
+// regularity. The energy is invariant under rigid motions and zero for any in-plane deformation
+// of a flat patch.
 //
 // Edge kinds. interior: the neighbour's vertex wi. mirror: the edge lies on the symmetry plane
 // y = 0, the neighbour is this face's mirror image, so wi is replaced by the reflection of vi
@@ -23,7 +26,10 @@
 // component that the missing vertex would fix (the direction q = d II / d (w . n) of the
 // interpolant) is left free and the energy minimised over it (a static condensation of the
 // quadratic form: D <- D - D q q^T D / (q^T D q)), so the edge transmits no moment conjugate to
-// it; wi's slot gets zero derivative.
+// it; wi's slot gets zero derivative. q depends on the stencil's shape and is the edge's normal
+// curvature direction n_e n_e^T only for symmetric stencils, so this is the moment-free edge in an
+// element-wise sense; it acts on the boundary row of faces only (for the tube, the pinned distal
+// end, far from the probe).
 #pragma once
 
 #include <Eigen/Core>
