@@ -1,7 +1,8 @@
 // growthuq eval: the thin-shell inverse for measured tubes, without any Monte Carlo. One tube
 // from flags (every output printed with its unit and the status), or a CSV of tubes with columns
 // named as `growthuq sample` writes them (k_N_per_m, h_nm, d_um, d0_um; h optional) written
-// back with the outputs and a status column appended.
+// back with the outputs and a status column appended. --fidelity shell_fe runs the
+// finite-element model's inverse instead (growthuq/fe/indentation.hpp), tube by tube.
 #include <array>
 #include <cmath>
 #include <iomanip>
@@ -17,10 +18,12 @@
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
 #include "growthuq/evaluation/evaluator.hpp"
+#include "growthuq/fe/indentation.hpp"
 #include "growthuq/io/csv.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "growthuq/mechanics/thin_shell_evaluators.hpp"
 #include "options.hpp"
+#include "shell_fe_flags.hpp"
 
 namespace growthuq::cli {
 namespace {
@@ -41,6 +44,9 @@ struct EvalOptions {
   std::string in;
   std::string out;
   bool force = false;
+  // Model: closed_form (the thin shell) or shell_fe (the finite-element shell, with its flags).
+  std::string fidelity = "closed_form";
+  ShellFeFlags model;
 };
 
 // An output, the unit it is written in, and whether it needs the wall thickness.
@@ -147,7 +153,135 @@ std::optional<std::vector<double>> input_column(const CsvTable& table, std::stri
   return found;
 }
 
-int evaluate_file(const EvalOptions& options, const Instrument& parameters) {
+// The finite-element inverse's outputs: the closed form's that keep their meaning (alpha and
+// phi are the closed form's own), and the unstressed thickness.
+constexpr std::array shell_fe_outputs{
+    Output{"p", "MPa", true},      Output{"E", "MPa", true},
+    Output{"lambda", "1", true},   Output{"hoop_stress", "MPa", true},
+    Output{"wall_stiffness", "N/m", true},
+};
+
+struct ShellFeValues {
+  ShellFeInverse inverse;
+  double lambda = 0, hoop_stress = 0, wall_stiffness = 0;
+  double value(std::string_view quantity) const {
+    if (quantity == "p") return inverse.pressure;
+    if (quantity == "E") return inverse.young;
+    if (quantity == "lambda") return lambda;
+    if (quantity == "hoop_stress") return hoop_stress;
+    return wall_stiffness;
+  }
+};
+
+// One tube through the finite-element inverse; the hoop stress p d / (2 h) is the far field's
+// exact equilibrium (mid-surface d, turgid h), E h the wall stiffness.
+ShellFeValues shell_fe_tube(const ShellFeMeasurement& tube, const Instrument& parameters,
+                            const ShellFeOptions& model) {
+  ShellFeValues values;
+  values.inverse = invert_indentation(tube, parameters, model);
+  values.lambda = tube.diameter / tube.plasmolysed_diameter;
+  values.hoop_stress = values.inverse.pressure * tube.diameter / (2.0 * tube.thickness);
+  values.wall_stiffness = values.inverse.young * tube.thickness;
+  return values;
+}
+
+std::string instrument_text(const EvalOptions& options, const Instrument& parameters) {
+  return "rho = " + options.rho_um + " um, nu = " + format_double(parameters.poisson_ratio) +
+         ", k_sys = " + (options.k_sys.empty() ? std::string("inf (ideal sensor)") : options.k_sys + " N/m");
+}
+
+int evaluate_point_shell_fe(const EvalOptions& options, const Instrument& parameters, const ShellFeOptions& model) {
+  for (const auto& [text, key] : {std::pair{&options.k, "--k"}, std::pair{&options.d_um, "--d-um"},
+                                  std::pair{&options.d0_um, "--d0-um"}, std::pair{&options.h_nm, "--h-nm"}}) {
+    if (text->empty()) {
+      throw InputError(std::string(command), std::string(key) + " is required with --fidelity shell_fe (or give a file with --in)");
+    }
+  }
+  ShellFeMeasurement tube;
+  tube.stiffness = positive_flag(options.k, "--k", "a positive stiffness in N/m");
+  tube.thickness = positive_flag(options.h_nm, "--h-nm", "a positive thickness in nm") * 1e-9;
+  tube.diameter = positive_flag(options.d_um, "--d-um", "a positive diameter in um") * 1e-6;
+  tube.plasmolysed_diameter = positive_flag(options.d0_um, "--d0-um", "a positive diameter in um") * 1e-6;
+  const ShellFeValues values = shell_fe_tube(tube, parameters, model);
+  const ShellFeInverse& inverse = values.inverse;
+  const bool ok = inverse.status == ShellFeStatus::ok;
+
+  std::cout << "finite-element shell inverse: " << describe(model) << "; " << instrument_text(options, parameters) << "\n";
+  for (const Output& output : shell_fe_outputs) {
+    const Quantity* quantity = find_quantity(output.quantity);
+    std::ostringstream line;
+    line << "  " << std::left << std::setw(20) << output.quantity << std::setw(22)
+         << (ok ? format_double(values.value(output.quantity) / unit_of(output.unit).to_si) : "-") << std::setw(6)
+         << (output.unit == "1" ? "" : output.unit) << (quantity ? quantity->description : "");
+    std::cout << line.str() << "\n";
+  }
+  const auto extra = [&](std::string_view name, const std::string& value, std::string_view unit, std::string_view what) {
+    std::ostringstream line;
+    line << "  " << std::left << std::setw(20) << name << std::setw(22) << value << std::setw(6) << unit << what;
+    std::cout << line.str() << "\n";
+  };
+  extra("h0", ok ? format_double(inverse.unstressed_thickness * 1e9) : "-", "nm", "unstressed wall thickness");
+  extra("p_over_E", ok ? format_double(inverse.pressure_over_young) : "-", "", "turgor over modulus, from the inflation");
+  extra("E_closed_form", inverse.closed_form_young > 0 ? format_double(inverse.closed_form_young * 1e-6) : "-", "MPa",
+        "the thin-shell inverse's E (the root's first estimate)");
+  extra("newton_iterations", std::to_string(inverse.newton_iterations), "", "");
+  extra("inflation_solves", std::to_string(inverse.inflation_solves), "", "finite-element inflations refining p/E");
+  extra("seconds", format_double(inverse.seconds), "s", "");
+  std::cout << "status: " << to_string(inverse.status);
+  if (!ok) std::cout << " (" << describe(inverse.status) << (inverse.message.empty() ? "" : ": " + inverse.message) << ")";
+  std::cout << "\n";
+  return 0;
+}
+
+
+// Every tube of a file through the finite-element inverse (after evaluate_file has read the
+// columns into `block`): the input columns, then p_MPa, E_MPa, lambda, hoop_stress_MPa,
+// wall_stiffness_N_per_m, h0_nm, status.
+int write_shell_fe_file(const EvalOptions& options, const Instrument& parameters, const ShellFeOptions& model,
+                        const CsvTable& table, const SampleBlock& block, Overwrite overwrite) {
+  std::vector<std::string> header = table.header;
+  std::vector<std::string> added;
+  for (const Output& output : shell_fe_outputs) added.push_back(column_name(output.quantity, unit_of(output.unit)));
+  added.emplace_back("h0_nm");
+  added.emplace_back("status");
+  for (const std::string& name : added) {
+    if (table.has_column(name)) {
+      throw InputError(file_location(table.path, 0), "the input already has a column '" + name + "', which eval writes: rename or drop it");
+    }
+    header.push_back(name);
+  }
+  CsvWriter writer(header);
+  std::map<ShellFeStatus, std::size_t> counts;
+  double seconds = 0;
+  for (std::size_t i = 0; i < block.size(); ++i) {
+    const ShellFeMeasurement tube{block.column("k")[i], block.column("h")[i], block.column("d")[i], block.column("d0")[i]};
+    const ShellFeValues values = shell_fe_tube(tube, parameters, model);
+    const bool ok = values.inverse.status == ShellFeStatus::ok;
+    ++counts[values.inverse.status];
+    seconds += values.inverse.seconds;
+    std::vector<std::string> cells = table.rows[i];
+    // A flagged tube gets empty cells, never "nan" (its status says why).
+    for (const Output& output : shell_fe_outputs) {
+      cells.push_back(ok ? format_double(values.value(output.quantity) / unit_of(output.unit).to_si) : "");
+    }
+    cells.push_back(ok ? format_double(values.inverse.unstressed_thickness * 1e9) : "");
+    cells.emplace_back(to_string(values.inverse.status));
+    writer.add_row(cells);
+  }
+  write_file_atomically(options.out, writer.text(), overwrite);
+  std::cout << table.rows.size() << (table.rows.size() == 1 ? " tube" : " tubes") << " from " << table.path
+            << " through the finite-element shell inverse (" << describe(model) << "; " << instrument_text(options, parameters)
+            << "), " << format_double(seconds) << " s\n";
+  for (const auto& [status, count] : counts) {
+    std::cout << "  " << std::left << std::setw(28) << to_string(status) << count;
+    if (status != ShellFeStatus::ok) std::cout << "  (" << describe(status) << ")";
+    std::cout << "\n";
+  }
+  std::cout << "wrote " << options.out << "\n";
+  return 0;
+}
+
+int evaluate_file(const EvalOptions& options, const Instrument& parameters, const ShellFeOptions* model) {
   if (options.out.empty()) throw InputError(std::string(command), "--in needs --out (the results CSV to write)");
   for (const auto& [text, key] : {std::pair{&options.k, "--k"}, std::pair{&options.h_nm, "--h-nm"},
                                   std::pair{&options.d_um, "--d-um"}, std::pair{&options.d0_um, "--d0-um"}}) {
@@ -177,6 +311,12 @@ int evaluate_file(const EvalOptions& options, const Instrument& parameters) {
   const auto thickness = input_column(table, "h");
   if (thickness) block.set_column("h", *thickness);
   const bool has_h = thickness.has_value();
+  if (model != nullptr) {
+    if (!has_h) {
+      throw InputError(file_location(table.path, 0), "--fidelity shell_fe needs the wall thickness: a column h_nm (or h_um, ...)");
+    }
+    return write_shell_fe_file(options, parameters, *model, table, block, overwrite);
+  }
 
   const ThinShellTurgor turgor(parameters, command);
   const ThinShellModulus modulus;
@@ -228,6 +368,7 @@ int evaluate_file(const EvalOptions& options, const Instrument& parameters) {
   return 0;
 }
 
+
 }  // namespace
 
 int run_eval(const Arguments& arguments) {
@@ -244,14 +385,21 @@ int run_eval(const Arguments& arguments) {
       ("in", po::value(&options.in), "CSV of tubes: columns k_N_per_m, d_um, d0_um [, h_nm] (other units allowed, e.g. h_um)")
       ("out", po::value(&options.out), "results CSV: the input columns, p_MPa, E_MPa, alpha_um, phi, lambda, "
                                        "hoop_stress_MPa, wall_stiffness_N_per_m, status")
-      ("force", po::bool_switch(&options.force), "overwrite --out if it exists");
+      ("force", po::bool_switch(&options.force), "overwrite --out if it exists")
+      ("fidelity", po::value(&options.fidelity), "the model inverted: closed_form (default; the thin shell, instant) or "
+                                                 "shell_fe (the finite-element shell, seconds per tube; needs h; writes "
+                                                 "p_MPa, E_MPa, lambda, hoop_stress_MPa, wall_stiffness_N_per_m, h0_nm, "
+                                                 "status). The options below are shell_fe's:");
+  options.model.declare(described);
   po::variables_map values;
   if (!parse_arguments(arguments, "eval",
                        "--rho-um R (--k K --d-um D --d0-um D0 [--h-nm H] | --in tubes.csv --out results.csv) [options]",
                        "Inverts the thin-shell model for measured tubes: turgor p and decay length alpha from\n"
                        "(k, d, d0), modulus E, hoop stress and wall stiffness E h when h is known.\n"
                        "Valid for 1 < d/d0 <= e (beyond e the wall is past its pressure maximum); other tubes get a\n"
-                       "status, not a number.",
+                       "status, not a number.\n"
+                       "--fidelity shell_fe inverts the finite-element shell instead (src/fe/README.md): p/E and h0 from\n"
+                       "the turgid d/d0 and the turgid (measured) h, then E from k over the force window; it needs h.",
                        described, {}, values)) {
     return 0;
   }
@@ -259,7 +407,16 @@ int run_eval(const Arguments& arguments) {
     throw InputError(std::string(command), "--out needs --in (a single tube is printed, not written)");
   }
   const Instrument parameters = instrument(options);
-  return options.in.empty() ? evaluate_point(options, parameters) : evaluate_file(options, parameters);
+  if (options.fidelity == "closed_form") {
+    for (const char* flag : {"law", "geometry", "mesh-file", "mesh", "substrate", "bending", "half-model", "tube-length-um",
+                             "probe-distance-um", "window-uN"}) {
+      if (values.count(flag)) throw InputError(std::string(command), "--" + std::string(flag) + " needs --fidelity shell_fe");
+    }
+    return options.in.empty() ? evaluate_point(options, parameters) : evaluate_file(options, parameters, nullptr);
+  }
+  if (options.fidelity != "shell_fe") throw_bad_value(command, "--fidelity", options.fidelity, "closed_form or shell_fe");
+  const ShellFeOptions model = options.model.parse(command);
+  return options.in.empty() ? evaluate_point_shell_fe(options, parameters, model) : evaluate_file(options, parameters, &model);
 }
 
 }  // namespace growthuq::cli

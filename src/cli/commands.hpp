@@ -27,5 +27,6 @@ int run_run(const Arguments& arguments);
 int run_tradeoff(const Arguments& arguments);
 int run_synth(const Arguments& arguments);
 int run_fit_line(const Arguments& arguments);
+int run_indent(const Arguments& arguments);
 
 }  // namespace growthuq::cli

@@ -84,8 +84,8 @@ TEST_CASE("far field: the small-strain limit of closed-end pressure") {
 
 TEST_CASE("far field: cauchy_log at nu = 0 is the engine's hoop relation p d/(2h) = E ln(d/d0)") {
   // thin_shell_forward solves it with Lambert W (SI units): d0 = 5.35 um, E = 20 MPa.
-  growthuq::ThinShellParameters parameters;
-  parameters.probe_radius = 0.25e-6;
+  growthuq::Instrument parameters;
+  parameters.probe_radius_m = 0.25e-6;
   parameters.poisson_ratio = 0.0;
   const double d0 = 5.35e-6, E = 20e6;
   for (double h : {0.1e-6, 0.145e-6, 0.5e-6}) {

@@ -18,8 +18,8 @@ int main() {
   // Bessel implementations agree to about 1e-14 relative here; 1e-10 leaves room for either and
   // still catches any wrong term (a unit or factor error is of order 1).
   const double k = 2.0, d = 10e-6, d0 = 9.3e-6, rho = 0.5e-6, nu = 0.2;
-  growthuq::ThinShellParameters instrument;
-  instrument.probe_radius = rho;
+  growthuq::Instrument instrument;
+  instrument.probe_radius_m = rho;
   instrument.poisson_ratio = nu;
   const growthuq::TurgorResult turgor = growthuq::invert_turgor(k, d, d0, instrument);
 

@@ -1,0 +1,158 @@
+// The finite-element indentation model of a pressurised pollen tube, in SI units: its options
+// (one struct, validated in one place), one forward simulation (p, E, h, d0 -> force curve, k,
+// turgid diameter) and its inverse (k, h, d, d0 -> p, E). src/fe/README.md states the model.
+// Every function here is pure (no global state): safe to call from any thread or process.
+#pragma once
+
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "growthuq/mechanics/instrument.hpp"
+#include "growthuq/mechanics/thin_shell.hpp"
+
+namespace growthuq {
+
+// The wall's constitutive law, both linear in E (src/fe/README.md, equations 3-4).
+enum class ShellFeLaw {
+  hencky,                  // "log": Kirchhoff stress = Hooke's law of the logarithmic strain
+  saint_venant_kirchhoff,  // "stvk": second Piola-Kirchhoff stress = Hooke's law of Green's strain
+};
+enum class ShellFeGeometry { tube, sphere, file };
+enum class ShellFeMesh { coarse, standard, fine };  // "coarse" | "default" | "fine"
+
+// The model's options: the same struct is a campaign's [shell_fe] section (keys as named in
+// validate()'s messages). All lengths in m, forces in N.
+struct ShellFeOptions {
+  ShellFeLaw law = ShellFeLaw::hencky;
+  ShellFeGeometry geometry = ShellFeGeometry::tube;
+  std::string mesh_file;                // geometry = file: a closed triangulated surface, / d0 units
+  double tube_length = 100e-6;          // L, hemispherical tip included, m
+  double probe_distance = 10e-6;        // a, the probe's axis behind the apex, m
+  bool substrate = true;                // rigid frictionless plane under the tube, opposite the probe
+  bool bending = true;                  // Kirchhoff-Love bending on (off: membrane only)
+  bool half_model = true;               // mirror plane through the tube axis and the probe axis
+  ShellFeMesh mesh = ShellFeMesh::standard;
+  std::array<double, 2> force_window{0.4e-6, 4e-6};  // k is fitted over F in this window, N
+  // Inverse: refine the far-field inflation with finite-element inflation of the mesh when the
+  // turgid diameters differ by more than this (relative); 0 always refines, inf never.
+  double inflation_tolerance = 1e-4;
+
+  // Throws InputError("<location>", "<key> = '<value>': expected <range>") for the first bad
+  // option; keys: law, geometry, mesh_file, tube_length_um, probe_distance_um, mesh,
+  // force_window_uN.
+  void validate(std::string_view location) const;
+};
+
+std::string_view to_string(ShellFeLaw);       // "log", "stvk"
+std::string_view to_string(ShellFeGeometry);  // "tube", "sphere", "file"
+std::string_view to_string(ShellFeMesh);      // "coarse", "default", "fine"
+// The option's value from its name; InputError naming `location` and `key` otherwise.
+ShellFeLaw parse_shell_fe_law(std::string_view text, std::string_view location, std::string_view key);
+ShellFeGeometry parse_shell_fe_geometry(std::string_view text, std::string_view location, std::string_view key);
+ShellFeMesh parse_shell_fe_mesh(std::string_view text, std::string_view location, std::string_view key);
+
+// Why a simulation or an inverse has no value (never a NaN, never an exception from a batch).
+enum class ShellFeStatus {
+  ok,
+  invalid_input,              // an input outside its domain (non-finite, non-positive, d <= d0)
+  not_converged,              // Newton did not converge even after the load step was cut
+  burst,                      // the wall cannot hold the pressure (no inflated equilibrium)
+  contact_lost,               // the probe lost contact with the wall during the indentation
+  probe_beyond_mesh,          // the contact left the meshed region (tube too short for a)
+  window_not_reached,         // the curve never reached the force window's top
+  stiffness_at_sensor_limit,  // measured k >= k_sys: the series correction diverges
+  no_inflation_state,         // no pressure gives the measured turgid diameter and thickness
+  no_modulus_root,            // no E gives the measured k over the force window
+};
+std::string_view to_string(ShellFeStatus);
+std::string_view describe(ShellFeStatus);  // one sentence for users
+
+// Which thickness IndentationInput::thickness is.
+enum class ThicknessKind {
+  turgid,      // measured h, the inflated wall (h0 follows through the law's thickness stretch)
+  unstressed,  // h0, the plasmolysed wall
+};
+
+// One forward simulation's input, SI. Diameters are mid-surface diameters.
+struct IndentationInput {
+  double pressure = 0.0;              // turgor p, Pa
+  double young = 0.0;                 // E, Pa
+  double thickness = 0.0;             // m, see thickness_kind
+  ThicknessKind thickness_kind = ThicknessKind::turgid;
+  double plasmolysed_diameter = 0.0;  // d0 (unstressed), m
+  double depth = 0.0;                 // deepest indentation, m; 0: deep enough for the window's top
+  Instrument instrument;     // probe radius rho, Poisson ratio nu (k_sys: the k reported
+                                      // is the tube's, as the sensor measures it in series)
+};
+
+// The deformed state for field output (filled when asked, see indent()). SI: m, Pa.
+struct ShellFeField {
+  Eigen::Matrix3Xd reference;              // unstressed vertex positions
+  Eigen::Matrix3Xd deformed;               // final vertex positions
+  std::vector<std::array<int, 3>> faces;   // counter-clockwise seen from outside
+  std::vector<double> sigma1, sigma2;      // principal Cauchy membrane stresses per face, Pa
+  std::vector<double> von_mises;           // of the plane-stress state per face, Pa
+  std::vector<double> thickness_stretch;   // h/h0 per face
+};
+
+struct IndentationCurve {
+  ShellFeStatus status = ShellFeStatus::ok;
+  std::string message;                   // why, when status != ok
+  std::vector<double> depth;             // indentation delta, m, from 0
+  std::vector<double> force;             // probe force, whole tube, N
+  std::vector<double> contact_radius;    // m
+  double stiffness = 0.0;                // k over the force window, N/m (tube alone)
+  double measured_stiffness = 0.0;       // k in series with the sensor, N/m
+  double turgid_diameter = 0.0;          // far from tip and ends (tube), the sphere's otherwise, m
+  double axial_stretch = 0.0;            // tube only
+  double thickness_stretch = 0.0;        // h/h0 in the far field
+  double unstressed_thickness = 0.0;     // h0, m
+  double window_contact_radius = 0.0;    // contact radius at the window's top, m
+  int newton_iterations = 0;
+  double seconds = 0.0;                  // wall time of the whole call
+  double seconds_assembly = 0.0, seconds_factorisation = 0.0, seconds_contact = 0.0;
+  ShellFeField field;                    // empty unless asked for
+};
+
+// One forward simulation: inflate to p, indent to `input.depth` (or, when 0, deep enough for
+// the force window's top, deepened up to twice if the first depth fell short), fit k.
+// `keep_field` fills `field` with the final state. Throws InputError only for invalid input or
+// options and an unreadable mesh file; a numerical failure is a status.
+IndentationCurve indent(const IndentationInput& input, const ShellFeOptions& options, bool keep_field = false);
+
+// The inverse's input: one measured tube, SI.
+struct ShellFeMeasurement {
+  double stiffness = 0.0;             // measured k (probe and tube in series), N/m
+  double thickness = 0.0;             // turgid h, m
+  double diameter = 0.0;              // turgid d, m
+  double plasmolysed_diameter = 0.0;  // d0, m
+};
+
+struct ShellFeInverse {
+  ShellFeStatus status = ShellFeStatus::ok;
+  std::string message;
+  double pressure = 0.0;              // p, Pa
+  double young = 0.0;                 // E, Pa
+  double pressure_over_young = 0.0;   // p/E
+  double unstressed_thickness = 0.0;  // h0, m
+  double far_field_pressure_over_young = 0.0;  // p/E of the far-field inflation alone
+  int inflation_solves = 0;           // finite-element inflations of the refinement
+  double far_field_diameter_error = 0.0;  // the mesh's inflated d at the far field's p/E over the
+                                          // measured d, minus 1 (what the refinement corrected)
+  double closed_form_young = 0.0;     // the thin-shell inverse's E (the root's first estimate), Pa
+  double fitted_stiffness = 0.0;      // k of the model at (p, E) over the window, N/m
+  int newton_iterations = 0;
+  double seconds = 0.0;
+};
+
+// (k, h, d, d0; rho, nu, k_sys) -> (p, E): p/E and h0 from the turgid diameter and thickness,
+// then E from one dimensionless force curve (forces scale as E d0^2 at fixed p/E). Never throws
+// for a measurement outside the model (a status); throws InputError for invalid options.
+ShellFeInverse invert_indentation(const ShellFeMeasurement& measurement, const Instrument& instrument,
+                                  const ShellFeOptions& options);
+
+}  // namespace growthuq

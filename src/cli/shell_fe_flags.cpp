@@ -1,0 +1,106 @@
+#include "shell_fe_flags.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+
+namespace growthuq::cli {
+namespace {
+
+// A length in um or a force in uN for display: 12 digits drop the residue of the SI round trip.
+std::string typed(double si) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.12g", si * 1e6);
+  return text;
+}
+
+bool on_off(const std::string& text, std::string_view command, std::string_view flag) {
+  if (text == "on") return true;
+  if (text == "off") return false;
+  throw_bad_value(command, flag, text, "on or off");
+}
+
+}  // namespace
+
+void ShellFeFlags::declare(po::options_description& options) {
+  options.add_options()
+      ("law", po::value(&law), "wall law: log (default; Hencky, the Kirchhoff stress is Hooke's law of the log strain) "
+                               "or stvk (Saint Venant-Kirchhoff)")
+      ("geometry", po::value(&geometry), "tube (default; capped by a hemisphere, distal end pinned), sphere "
+                                         "(closed, of diameter d0) or file (--mesh-file)")
+      ("mesh-file", po::value(&mesh_file), "closed triangulated surface (Wavefront .obj or .off), lengths in units "
+                                           "of d0 (--geometry file only)")
+      ("mesh", po::value(&mesh), "mesh density: coarse, default or fine (omitted: default; each level sqrt(2) finer "
+                                 "than the one before)")
+      ("substrate", po::value(&substrate), "rigid frictionless plane under the tube, opposite the probe: on (default) or off")
+      ("bending", po::value(&bending), "Kirchhoff-Love bending: on (default) or off (membrane only)")
+      ("half-model", po::value(&half_model), "mirror plane through the tube axis and the probe axis: on (default) or off")
+      ("tube-length-um", po::value(&tube_length_um), "tube length L [um], tip included (default 100; 5 to 1e6)")
+      ("probe-distance-um", po::value(&probe_distance_um), "probe axis behind the apex [um] (default 10; 0 to L)")
+      ("window-uN", po::value(&window_uN), "force window of the fit of k [uN], LOW,HIGH (default 0.4,4)");
+}
+
+void InstrumentFlags::declare(po::options_description& options) {
+  options.add_options()
+      ("rho-um", po::value(&rho_um), "probe radius [um] (required: it dominates k, and has no default)")
+      ("nu", po::value(&nu), "Poisson ratio of the wall, in [0, 0.5) (default 0.2, as in the published FEM)")
+      ("k-sys", po::value(&k_sys), "sensor stiffness [N/m] in series with the tube (default: ideal)");
+}
+
+// The one instrument parser and range check of every command and the campaign file.
+Instrument InstrumentFlags::parse(std::string_view command) const {
+  return parse_instrument(instrument_flags(command, rho_um, nu, k_sys), ProbeRadius::required);
+}
+
+ShellFeOptions ShellFeFlags::parse(std::string_view command) const {
+  ShellFeOptions options;
+  options.law = parse_shell_fe_law(law, command, "--law");
+  options.geometry = parse_shell_fe_geometry(geometry, command, "--geometry");
+  options.mesh_file = mesh_file;
+  if (options.geometry == ShellFeGeometry::file && mesh_file.empty()) {
+    throw InputError(std::string(command), "--geometry file needs --mesh-file (a closed .obj or .off surface)");
+  }
+  if (options.geometry != ShellFeGeometry::file && !mesh_file.empty()) {
+    throw InputError(std::string(command), "--mesh-file needs --geometry file");
+  }
+  options.mesh = parse_shell_fe_mesh(mesh, command, "--mesh");
+  options.substrate = on_off(substrate, command, "--substrate");
+  options.bending = on_off(bending, command, "--bending");
+  options.half_model = on_off(half_model, command, "--half-model");
+  options.tube_length = parse_double(tube_length_um, command, "--tube-length-um") * 1e-6;
+  if (!(options.tube_length >= 5e-6 && options.tube_length <= 1.0)) {
+    throw_bad_value(command, "--tube-length-um", tube_length_um, "a tube length in [5, 1e6] um (default 100)");
+  }
+  options.probe_distance = parse_double(probe_distance_um, command, "--probe-distance-um") * 1e-6;
+  if (!(options.probe_distance >= 0 && options.probe_distance < options.tube_length)) {
+    throw_bad_value(command, "--probe-distance-um", probe_distance_um,
+                    "the probe's distance behind the apex in [0, tube length) um (default 10)");
+  }
+  const auto comma = window_uN.find(',');
+  if (comma == std::string::npos) throw_bad_value(command, "--window-uN", window_uN, "LOW,HIGH in uN, e.g. 0.4,4");
+  const double low = parse_double(window_uN.substr(0, comma), command, "--window-uN");
+  const double high = parse_double(window_uN.substr(comma + 1), command, "--window-uN");
+  if (!(low >= 0 && high > low)) throw_bad_value(command, "--window-uN", window_uN, "LOW,HIGH in uN with 0 <= LOW < HIGH");
+  options.force_window = {low * 1e-6, high * 1e-6};
+  options.validate(command);  // the library's own check, as an invariant
+  return options;
+}
+
+std::string describe(const ShellFeOptions& options) {
+  std::ostringstream text;
+  text << "law = " << to_string(options.law) << ", geometry = " << to_string(options.geometry);
+  if (options.geometry == ShellFeGeometry::tube) {
+    text << " (L = " << typed(options.tube_length) << " um, probe " << typed(options.probe_distance)
+         << " um behind the apex)";
+  } else if (options.geometry == ShellFeGeometry::file) {
+    text << " (" << options.mesh_file << ")";
+  }
+  text << ", mesh = " << to_string(options.mesh) << ", substrate " << (options.substrate ? "on" : "off") << ", bending "
+       << (options.bending ? "on" : "off") << (options.half_model ? ", half model" : ", full model") << ", window "
+       << typed(options.force_window[0]) << "-" << typed(options.force_window[1]) << " uN";
+  return text.str();
+}
+
+}  // namespace growthuq::cli

@@ -1,0 +1,199 @@
+// invert_indentation(): (k, h, d, d0; rho, nu, k_sys) -> (p, E). Three steps (src/fe/README.md,
+// "Inverse"): the series correction of the sensor; p/E and h0 from the turgid diameter and
+// thickness (far field, refined by finite-element inflation of the mesh); E from one
+// dimensionless force curve at that p/E (forces scale as E d0^2), a 1-D root in E.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "fe/far_field.hpp"
+#include "fe/forward.hpp"
+#include "fe/modulus_from_curve.hpp"
+#include "fe/shell_fe_problem.hpp"
+#include "growthuq/core/numbers.hpp"
+#include "growthuq/fe/indentation.hpp"
+#include "growthuq/mechanics/thin_shell.hpp"
+
+namespace growthuq {
+namespace {
+
+bool positive_finite(double value) { return std::isfinite(value) && value > 0.0; }
+
+// What the inflation step found: the dimensionless state the force curve is computed at.
+struct Inflated {
+  ShellFeStatus status = ShellFeStatus::ok;
+  std::string message;
+  double pressure = 0.0;   // p/E
+  double thickness = 0.0;  // h0/d0
+};
+
+// h0/d0 for the turgid h/d0 at P = (p/E)/(h0/d0): the far field's thickness stretch (tube),
+// the mapping indent() uses too, so that forward and inverse agree.
+double unstressed_at(ShellFeLaw law, double p_over_t, double turgid, double nu) {
+  double thickness = turgid;
+  for (int pass = 0; pass < 100; ++pass) {
+    const fe::FarFieldInflation state = fe::far_field_inflation(fe::to_far_field_law(law), p_over_t * thickness, thickness, nu);
+    if (state.burst || !(state.thickness_stretch > 0)) return 0.0;
+    const double next = turgid / state.thickness_stretch;
+    if (std::abs(next - thickness) <= 1e-13 * next) return next;
+    thickness = next;
+  }
+  return 0.0;
+}
+
+// The far-field state, then, when the mesh's inflated diameter differs from the measured one
+// by more than the options' tolerance, a secant iteration in ln P on finite-element inflations
+// (the first slope from the far field), at most 6 solves.
+Inflated inflate(const ShellFeMeasurement& m, const Instrument& instrument, const ShellFeOptions& options,
+                 fe::ForwardProblem problem, ShellFeInverse& inverse) {
+  Inflated inflated;
+  const double d0 = m.plasmolysed_diameter, lambda = m.diameter / d0, turgid = m.thickness / d0;
+  const double nu = instrument.poisson_ratio;
+  // FE1's closed-form far-field inverse: the membrane state depends on p/E and h0/d0 only
+  // through G = (p/E)/(h0/d0), and G follows explicitly from the hoop stretch.
+  const fe::FarFieldInverse far = fe::far_field_inverse(fe::to_far_field_law(options.law), lambda, turgid, nu);
+  if (far.status != fe::FarFieldInverseStatus::ok) {
+    inflated.status = ShellFeStatus::no_inflation_state;
+    inflated.message = std::string("far field at d/d0 = ") + format_double(lambda) + ": " +
+                       (far.status == fe::FarFieldInverseStatus::beyond_pressure_maximum ? "past the pressure maximum (burst)"
+                        : far.status == fe::FarFieldInverseStatus::thickness_collapsed
+                            ? "the plane-stress thickness has vanished"
+                            : "no positive pressure gives it");
+    return inflated;
+  }
+  inverse.far_field_pressure_over_young = far.pressure_over_E;
+  inflated.pressure = far.pressure_over_E;
+  inflated.thickness = far.h0_over_d0;
+  if (!std::isfinite(options.inflation_tolerance)) return inflated;
+
+  const bool tube = options.geometry == ShellFeGeometry::tube;
+  // State at u = ln P: thickness from the far field (tube) or the last inflation's stretch.
+  double u = std::log(far.pressure_over_E / far.h0_over_d0);
+  double thickness = far.h0_over_d0;
+  const auto residual = [&](double at, double& h0, bool& failed) {
+    if (tube) h0 = unstressed_at(options.law, std::exp(at), turgid, nu);
+    problem.pressure = std::exp(at) * h0;
+    problem.thickness = h0;
+    const fe::ForwardResult result = fe::simulate_inflation(problem);
+    ++inverse.inflation_solves;
+    inverse.newton_iterations += result.newton_iterations;
+    failed = result.status != fe::FeStatus::ok || !(h0 > 0) || !(result.turgid_diameter > 0);
+    if (failed) {
+      inflated.status = fe::to_shell_fe_status(result.status == fe::FeStatus::ok ? fe::FeStatus::burst : result.status);
+      inflated.message = "finite-element inflation: " + result.message;
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+    if (!tube) h0 = turgid / result.thickness_stretch;
+    return result.turgid_diameter / lambda - 1.0;
+  };
+  bool failed = false;
+  double r = residual(u, thickness, failed);
+  if (failed) return inflated;
+  inverse.far_field_diameter_error = r;
+  // The far field's slope d(ln lambda)/d(ln P), by a central difference of the closed solution.
+  const auto far_lambda = [&](double at) {
+    return fe::far_field_inflation(fe::to_far_field_law(options.law), std::exp(at) * far.h0_over_d0, far.h0_over_d0, nu).hoop_stretch;
+  };
+  double slope = (std::log(far_lambda(u + 1e-4)) - std::log(far_lambda(u - 1e-4))) / 2e-4;
+  if (!(std::isfinite(slope) && slope > 0)) slope = 1.0;
+  double previous_u = u, previous_r = r;
+  for (int solve = 1; std::abs(r) > options.inflation_tolerance; ++solve) {
+    if (solve >= 6) {
+      inflated.status = ShellFeStatus::no_inflation_state;
+      inflated.message = "finite-element inflation did not reach d/d0 = " + format_double(lambda) + " in 6 solves (off by " +
+                         format_double(r) + ")";
+      return inflated;
+    }
+    if (solve > 1 && r != previous_r) slope = (r - previous_r) / (u - previous_u);
+    previous_u = u;
+    previous_r = r;
+    u -= r / slope;
+    r = residual(u, thickness, failed);
+    if (failed) return inflated;
+  }
+  inflated.pressure = std::exp(u) * thickness;
+  inflated.thickness = thickness;
+  return inflated;
+}
+
+}  // namespace
+
+ShellFeInverse invert_indentation(const ShellFeMeasurement& m, const Instrument& instrument,
+                                  const ShellFeOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  options.validate("shell_fe inverse");
+  validate(instrument, "shell_fe inverse");
+  fe::check_shell_poisson(instrument.poisson_ratio, "shell_fe inverse");
+  ShellFeInverse inverse;
+  const auto finish = [&](ShellFeStatus status, std::string message) {
+    inverse.status = status;
+    inverse.message = std::move(message);
+    inverse.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return inverse;
+  };
+  if (!positive_finite(m.stiffness) || !positive_finite(m.thickness) || !positive_finite(m.diameter) ||
+      !positive_finite(m.plasmolysed_diameter)) {
+    return finish(ShellFeStatus::invalid_input, "k, h, d and d0 must be positive and finite");
+  }
+  if (!(m.diameter > m.plasmolysed_diameter)) return finish(ShellFeStatus::invalid_input, "d <= d0: no inflation");
+  if (m.thickness >= 0.5 * m.plasmolysed_diameter) return finish(ShellFeStatus::invalid_input, "h >= d0/2: not a shell");
+  // Probe and tube in series, 1/k_m = 1/k + 1/k_sys, as the thin-shell inverse corrects it
+  // (mechanics/thin_shell.cpp, invert_turgor).
+  if (m.stiffness >= instrument.sensor_stiffness_N_per_m) {
+    return finish(ShellFeStatus::stiffness_at_sensor_limit, "measured k >= k_sys");
+  }
+  const double k = m.stiffness / (1.0 - m.stiffness / instrument.sensor_stiffness_N_per_m);
+  const double d0 = m.plasmolysed_diameter;
+
+  // The closed form's E: the root's first estimate (any positive E would do; a good one saves
+  // bracketing steps).
+  const TurgorResult turgor = invert_turgor(m.stiffness, m.diameter, d0, instrument);
+  if (turgor.status == SampleStatus::ok) {
+    const ModulusResult modulus = invert_modulus(turgor.p, m.diameter, d0, m.thickness);
+    if (modulus.status == SampleStatus::ok) inverse.closed_form_young = modulus.E;
+  }
+
+  fe::ForwardProblem problem = fe::make_problem(options, d0, instrument.probe_radius_m, instrument.poisson_ratio);
+  const Inflated inflated = inflate(m, instrument, options, problem, inverse);
+  if (inflated.status != ShellFeStatus::ok) return finish(inflated.status, inflated.message);
+  inverse.pressure_over_young = inflated.pressure;
+  inverse.unstressed_thickness = inflated.thickness * d0;
+  problem.pressure = inflated.pressure;
+  problem.thickness = inflated.thickness;
+
+  const double estimate = inverse.closed_form_young > 0 ? inverse.closed_form_young : k / (0.05 * d0);
+  const double low = options.force_window[0], high = options.force_window[1];
+  // Deep enough that the window's top is on the curve at the root: 1.5 times the depth at
+  // which k reaches it, within 5-60 % of d0; deepened twice if short.
+  double depth = std::clamp(1.5 * high / (k * d0), 0.05, 0.6);
+  for (int attempt = 0;; ++attempt) {
+    problem.max_depth = depth;
+    const fe::ForwardResult result = fe::simulate_forward(problem);
+    inverse.newton_iterations += result.newton_iterations;
+    const fe::ModulusMatch match = fe::match_modulus(result.depth, result.force, k, d0, low, high, estimate);
+    if (match.status == fe::ModulusMatchStatus::ok) {
+      inverse.young = match.young;
+      inverse.pressure = inflated.pressure * match.young;
+      inverse.fitted_stiffness = match.fitted_stiffness;
+      return finish(ShellFeStatus::ok, result.status == fe::FeStatus::ok
+                                           ? ""
+                                           : "E from the curve up to where the solver stopped (" +
+                                                 std::string(fe::to_string(result.status)) + ")");
+    }
+    if (result.status != fe::FeStatus::ok) {
+      return finish(fe::to_shell_fe_status(result.status), "force curve: " + result.message);
+    }
+    if (match.status != fe::ModulusMatchStatus::curve_too_short) {
+      return finish(ShellFeStatus::no_modulus_root, "no E gives k = " + format_double(k) + " N/m over the window");
+    }
+    if (attempt == 2 || depth >= 0.6) {
+      return finish(ShellFeStatus::window_not_reached, "the curve to " + format_double(depth) +
+                                                           " d0 is too short for the window at the E that k needs");
+    }
+    depth = std::min(2.0 * depth, 0.6);
+  }
+}
+
+}  // namespace growthuq

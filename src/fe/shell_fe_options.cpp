@@ -1,0 +1,126 @@
+// ShellFeOptions' names, parsing and validation, and the statuses' names: everything a user
+// types or reads about the finite-element model, in one place.
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+#include "growthuq/fe/indentation.hpp"
+
+namespace growthuq {
+namespace {
+
+// A length in um (or a force in uN) as typed: 12 significant digits drop the binary residue
+// of the SI conversion (4e-6 * 1e6 = 3.9999999999999996).
+std::string micrometres(double si) {
+  std::array<char, 32> text{};
+  std::snprintf(text.data(), text.size(), "%.12g", si * 1e6);
+  return text.data();
+}
+
+}  // namespace
+
+std::string_view to_string(ShellFeLaw law) {
+  return law == ShellFeLaw::hencky ? "log" : "stvk";
+}
+
+std::string_view to_string(ShellFeGeometry geometry) {
+  switch (geometry) {
+    case ShellFeGeometry::tube: return "tube";
+    case ShellFeGeometry::sphere: return "sphere";
+    case ShellFeGeometry::file: return "file";
+  }
+  return "?";
+}
+
+std::string_view to_string(ShellFeMesh mesh) {
+  switch (mesh) {
+    case ShellFeMesh::coarse: return "coarse";
+    case ShellFeMesh::standard: return "default";
+    case ShellFeMesh::fine: return "fine";
+  }
+  return "?";
+}
+
+ShellFeLaw parse_shell_fe_law(std::string_view text, std::string_view location, std::string_view key) {
+  if (text == "log") return ShellFeLaw::hencky;
+  if (text == "stvk") return ShellFeLaw::saint_venant_kirchhoff;
+  throw_bad_value(location, key, text, "log (Hencky: Kirchhoff stress = Hooke of the log strain) or stvk (Saint Venant-Kirchhoff)");
+}
+
+ShellFeGeometry parse_shell_fe_geometry(std::string_view text, std::string_view location, std::string_view key) {
+  if (text == "tube") return ShellFeGeometry::tube;
+  if (text == "sphere") return ShellFeGeometry::sphere;
+  if (text == "file") return ShellFeGeometry::file;
+  throw_bad_value(location, key, text, "tube, sphere or file");
+}
+
+ShellFeMesh parse_shell_fe_mesh(std::string_view text, std::string_view location, std::string_view key) {
+  if (text == "coarse") return ShellFeMesh::coarse;
+  if (text == "default") return ShellFeMesh::standard;
+  if (text == "fine") return ShellFeMesh::fine;
+  throw_bad_value(location, key, text, "coarse, default or fine");
+}
+
+void ShellFeOptions::validate(std::string_view location) const {
+  if (geometry == ShellFeGeometry::file && mesh_file.empty()) {
+    throw_bad_value(location, "mesh_file", "", "a closed triangulated surface file (geometry = file needs one)");
+  }
+  if (geometry != ShellFeGeometry::file && !mesh_file.empty()) {
+    throw_bad_value(location, "mesh_file", mesh_file, "no mesh file unless geometry = file");
+  }
+  // The tube must hold its hemispherical tip (radius d0/2 <= 25 um over the envelope) and
+  // reach well behind the probe; 1 m is an upper bound against a unit mistake.
+  if (!(std::isfinite(tube_length) && tube_length >= 5e-6 && tube_length <= 1.0)) {
+    throw_bad_value(location, "tube_length_um", micrometres(tube_length), "a tube length in [5, 1e6] um (default 100)");
+  }
+  if (!(std::isfinite(probe_distance) && probe_distance >= 0.0 && probe_distance < tube_length)) {
+    throw_bad_value(location, "probe_distance_um", micrometres(probe_distance),
+                    "the probe's distance behind the apex in [0, tube_length) um (default 10)");
+  }
+  const double low = force_window[0], high = force_window[1];
+  if (!(std::isfinite(low) && std::isfinite(high) && low >= 0.0 && high > low)) {
+    throw_bad_value(location, "force_window_uN", micrometres(low) + "," + micrometres(high),
+                    "two forces 0 <= low < high in uN (default 0.4,4)");
+  }
+  if (!(inflation_tolerance >= 0.0)) {
+    throw_bad_value(location, "inflation_tolerance", format_double(inflation_tolerance),
+                    "a non-negative relative diameter difference (default 1e-4; inf: far field only)");
+  }
+}
+
+std::string_view to_string(ShellFeStatus status) {
+  switch (status) {
+    case ShellFeStatus::ok: return "ok";
+    case ShellFeStatus::invalid_input: return "invalid_input";
+    case ShellFeStatus::not_converged: return "not_converged";
+    case ShellFeStatus::burst: return "burst";
+    case ShellFeStatus::contact_lost: return "contact_lost";
+    case ShellFeStatus::probe_beyond_mesh: return "probe_beyond_mesh";
+    case ShellFeStatus::window_not_reached: return "window_not_reached";
+    case ShellFeStatus::stiffness_at_sensor_limit: return "stiffness_at_sensor_limit";
+    case ShellFeStatus::no_inflation_state: return "no_inflation_state";
+    case ShellFeStatus::no_modulus_root: return "no_modulus_root";
+  }
+  return "?";
+}
+
+std::string_view describe(ShellFeStatus status) {
+  switch (status) {
+    case ShellFeStatus::ok: return "a value";
+    case ShellFeStatus::invalid_input: return "an input is outside its domain (non-finite, non-positive, or d <= d0)";
+    case ShellFeStatus::not_converged: return "Newton's method did not converge, even with the load step cut";
+    case ShellFeStatus::burst: return "the wall cannot hold the pressure: no inflated equilibrium";
+    case ShellFeStatus::contact_lost: return "the probe lost contact with the wall";
+    case ShellFeStatus::probe_beyond_mesh: return "the contact left the meshed region";
+    case ShellFeStatus::window_not_reached: return "the force curve never reached the force window's top";
+    case ShellFeStatus::stiffness_at_sensor_limit: return "measured k >= sensor stiffness: the series correction diverges";
+    case ShellFeStatus::no_inflation_state: return "no pressure gives the measured turgid diameter and thickness";
+    case ShellFeStatus::no_modulus_root: return "no modulus gives the measured k over the force window";
+  }
+  return "?";
+}
+
+}  // namespace growthuq

@@ -1,0 +1,107 @@
+#include "shell_fe_problem.hpp"
+
+#include <cmath>
+
+#include "fe/far_field.hpp"
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+
+namespace growthuq::fe {
+
+ForwardProblem make_problem(const ShellFeOptions& options, double plasmolysed_diameter, double probe_radius,
+                            double poisson) {
+  ForwardProblem problem;
+  switch (options.geometry) {
+    case ShellFeGeometry::tube: problem.geometry = Geometry::tube; break;
+    case ShellFeGeometry::sphere: problem.geometry = Geometry::sphere; break;
+    case ShellFeGeometry::file: problem.geometry = Geometry::file; break;
+  }
+  problem.mesh_file = options.mesh_file;
+  problem.poisson = poisson;
+  problem.law = to_material_law(options.law);
+  problem.probe_radius = probe_radius / plasmolysed_diameter;
+  problem.tube_length = options.tube_length / plasmolysed_diameter;
+  problem.probe_distance = options.probe_distance / plasmolysed_diameter;
+  problem.substrate = options.substrate;
+  problem.bending = options.bending;
+  problem.half_model = options.half_model;
+  switch (options.mesh) {
+    case ShellFeMesh::coarse: problem.mesh = MeshLevel::coarse; break;
+    case ShellFeMesh::standard: problem.mesh = MeshLevel::standard; break;
+    case ShellFeMesh::fine: problem.mesh = MeshLevel::fine; break;
+  }
+  return problem;
+}
+
+void check_shell_poisson(double poisson, std::string_view location) {
+  if (!(poisson >= 0.0 && poisson < 0.5)) {
+    throw_bad_value(location, "nu", format_double(poisson), "a Poisson ratio in [0, 0.5) for the shell (0.2 for the published FEM)");
+  }
+}
+
+ShellFeStatus to_shell_fe_status(FeStatus status) {
+  switch (status) {
+    case FeStatus::ok: return ShellFeStatus::ok;
+    case FeStatus::not_converged: return ShellFeStatus::not_converged;
+    case FeStatus::burst: return ShellFeStatus::burst;
+    case FeStatus::contact_lost: return ShellFeStatus::contact_lost;
+    case FeStatus::probe_beyond_mesh: return ShellFeStatus::probe_beyond_mesh;
+    case FeStatus::invalid_input: return ShellFeStatus::invalid_input;
+  }
+  return ShellFeStatus::not_converged;
+}
+
+MaterialLaw to_material_law(ShellFeLaw law) {
+  return law == ShellFeLaw::hencky ? MaterialLaw::hencky : MaterialLaw::saint_venant_kirchhoff;
+}
+
+FarFieldLaw to_far_field_law(ShellFeLaw law) {
+  return law == ShellFeLaw::hencky ? FarFieldLaw::hencky : FarFieldLaw::saint_venant_kirchhoff;
+}
+
+double far_field_unstressed_thickness(ShellFeLaw law, double pressure_over_young, double turgid_thickness,
+                                      double poisson) {
+  const FarFieldLaw far_law = to_far_field_law(law);
+  double thickness = turgid_thickness;
+  for (int pass = 0; pass < 100; ++pass) {
+    const FarFieldInflation inflated = far_field_inflation(far_law, pressure_over_young, thickness, poisson);
+    if (inflated.burst || !(inflated.thickness_stretch > 0)) return 0.0;
+    const double next = turgid_thickness / inflated.thickness_stretch;
+    if (std::abs(next - thickness) <= 1e-13 * next) return next;
+    thickness = next;
+  }
+  return 0.0;
+}
+
+void curve_in_si(const ForwardResult& result, double d0, double young, IndentationCurve& curve) {
+  const double force_scale = young * d0 * d0;
+  curve.depth.clear();
+  curve.force.clear();
+  curve.contact_radius.clear();
+  for (double delta : result.depth) curve.depth.push_back(delta * d0);
+  for (double force : result.force) curve.force.push_back(force * force_scale);
+  for (double radius : result.contact_radius) curve.contact_radius.push_back(radius * d0);
+  curve.turgid_diameter = result.turgid_diameter * d0;
+  curve.axial_stretch = result.axial_stretch;
+  curve.thickness_stretch = result.thickness_stretch;
+  curve.newton_iterations += result.newton_iterations;
+  curve.seconds_assembly += result.seconds_assembly;
+  curve.seconds_factorisation += result.seconds_factorisation;
+  curve.seconds_contact += result.seconds_contact;
+}
+
+ShellFeField field_in_si(const ForwardResult& result, double d0, double young) {
+  ShellFeField field;
+  field.reference = result.mesh.positions * d0;
+  field.deformed = result.deformed * d0;
+  field.faces = result.mesh.faces;
+  for (const MembraneStress& stress : result.face_stress) {
+    field.sigma1.push_back(stress.sigma1 * young);
+    field.sigma2.push_back(stress.sigma2 * young);
+    field.von_mises.push_back(stress.von_mises * young);
+    field.thickness_stretch.push_back(stress.thickness_stretch);
+  }
+  return field;
+}
+
+}  // namespace growthuq::fe

@@ -1,0 +1,163 @@
+// `growthuq indent` and `growthuq eval --fidelity shell_fe` end to end (coarse mesh): outputs
+// read back and compared with the library, the inverse of the forward, one-line errors.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include "fe/force_window.hpp"
+#include "growthuq/core/numbers.hpp"
+#include "growthuq/fe/indentation.hpp"
+#include "growthuq/io/csv.hpp"
+#include "support/cli_run.hpp"
+#include "support/scratch_directory.hpp"
+
+using namespace growthuq;
+using namespace growthuq::testing;
+namespace fs = std::filesystem;
+
+namespace {
+
+// The `name = value` lines of a run.
+std::map<std::string, std::string> values_of(const std::string& out) {
+  std::map<std::string, std::string> values;
+  std::size_t start = 0;
+  while (start < out.size()) {
+    const std::size_t end = out.find('\n', start);
+    const std::string line = out.substr(start, end - start);
+    const std::size_t equals = line.find(" = ");
+    if (equals != std::string::npos && line[0] != '#') values[line.substr(0, equals)] = line.substr(equals + 3);
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return values;
+}
+
+constexpr const char* tube = "--p-MPa 0.3 --E-MPa 30 --h-nm 200 --d0-um 5.35 --rho-um 0.25 --mesh coarse";
+constexpr const char* tube_any_mesh = "--p-MPa 0.3 --E-MPa 30 --h-nm 200 --d0-um 5.35 --rho-um 0.25";
+
+}  // namespace
+
+TEST_CASE("indent: the curve and the name = value lines, as the library computes them") {
+  const ScratchDirectory scratch("indent_run");
+  const CliOutcome run = run_cli(std::string("indent ") + tube + " --out curve.csv --field wall.xdmf", scratch.root);
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  auto values = values_of(run.out);
+  REQUIRE(values["status"] == "ok");
+  for (const char* name : {"k_N_per_m", "d_um", "newton_iterations", "seconds"}) CHECK(values.count(name) == 1);
+
+  // The library at the same input gives the same k and diameter (the CLI only converts units).
+  IndentationInput input;
+  input.pressure = 0.3e6;
+  input.young = 30e6;
+  input.thickness = 200e-9;
+  input.plasmolysed_diameter = 5.35e-6;
+  input.instrument.probe_radius = 0.25e-6;
+  ShellFeOptions options;
+  options.mesh = ShellFeMesh::coarse;
+  const IndentationCurve curve = indent(input, options);
+  REQUIRE(curve.status == ShellFeStatus::ok);
+  CHECK(parse_double(values["k_N_per_m"], "test", "k") == doctest::Approx(curve.stiffness).epsilon(1e-12));
+  CHECK(parse_double(values["d_um"], "test", "d") == doctest::Approx(curve.turgid_diameter * 1e6).epsilon(1e-12));
+
+  // The CSV's curve gives that k through the window fit (0.4-4 uN).
+  const CsvTable table = read_csv((scratch.root / "curve.csv").string());
+  REQUIRE(table.header.at(0) == "delta_um");
+  REQUIRE(table.header.at(1) == "F_uN");
+  const std::vector<double> delta = table.numeric_column("delta_um"), force = table.numeric_column("F_uN");
+  const fe::WindowFit fit = fe::fit_force_window(delta, force, 0.4, 4.0);
+  REQUIRE(fit.status == fe::WindowFitStatus::ok);
+  CHECK(fit.slope == doctest::Approx(curve.stiffness).epsilon(1e-12));  // uN/um = N/m
+  CHECK(fs::exists(scratch.root / "wall.xdmf"));
+  CHECK(fs::exists(scratch.root / "wall.h5"));
+
+  // eval --fidelity shell_fe on the forward's k and d recovers p and E (tolerance as in
+  // tests/fe/test_shell_fe_model.cpp: the load steps of two curves, 2e-3).
+  const std::string eval = "eval --fidelity shell_fe --mesh coarse --rho-um 0.25 --h-nm 200 --d0-um 5.35 --k " +
+                           values["k_N_per_m"] + " --d-um " + values["d_um"];
+  const CliOutcome inverse = run_cli(eval, scratch.root);
+  INFO(inverse.err);
+  REQUIRE(inverse.exit_code == 0);
+  CHECK(inverse.out.find("status: ok") != std::string::npos);
+  const auto p_at = inverse.out.find("  p  ");
+  REQUIRE(p_at != std::string::npos);
+  const double p = parse_double(inverse.out.substr(p_at + 2 + 16, 22), "test", "p");
+  CHECK(p == doctest::Approx(0.3).epsilon(2e-3));
+}
+
+TEST_CASE("eval --fidelity shell_fe: every tube of a file, a flagged tube with empty cells") {
+  const ScratchDirectory scratch("indent_eval_file");
+  std::ofstream(scratch.root / "tubes.csv") << "k_N_per_m,h_nm,d_um,d0_um\n2.0,200,6.4,5.35\n2.0,200,5.0,5.35\n";
+  const CliOutcome run = run_cli("eval --fidelity shell_fe --mesh coarse --rho-um 0.25 --in tubes.csv --out results.csv", scratch.root);
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  const CsvTable table = read_csv((scratch.root / "results.csv").string());
+  REQUIRE(table.rows.size() == 2);
+  const auto column = [&](const std::string& name) {
+    for (std::size_t c = 0; c < table.header.size(); ++c) {
+      if (table.header[c] == name) return c;
+    }
+    FAIL("no column " << name);
+    return std::size_t{0};
+  };
+  CHECK(table.rows[0][column("status")] == "ok");
+  CHECK(parse_double(table.rows[0][column("p_MPa")], "test", "p") > 0);
+  CHECK(table.rows[1][column("status")] == "invalid_input");
+  CHECK(table.rows[1][column("p_MPa")].empty());
+  CHECK(table.rows[1][column("E_MPa")].empty());
+}
+
+TEST_CASE("indent and eval --fidelity: bad input is one line naming the flag, nothing written") {
+  const ScratchDirectory scratch("indent_errors");
+  const struct {
+    std::string arguments, expected;
+  } cases[] = {
+      {"indent --p-MPa -1 --E-MPa 30 --h-nm 200 --d0-um 5.35 --rho-um 0.25 --out c.csv", "--p-MPa = '-1': expected a positive turgor in MPa"},
+      {"indent --p-MPa 0.3 --E-MPa 30 --h-nm 200 --d0-um 5.35 --out c.csv", "--rho-um is required"},
+      {"indent --p-MPa 0.3 --E-MPa 30 --h-nm 200 --h0-nm 180 --d0-um 5.35 --rho-um 0.25 --out c.csv", "give the wall thickness once"},
+      {std::string("indent ") + tube + " --law cauchy --out c.csv", "--law = 'cauchy': expected log"},
+      {std::string("indent ") + tube_any_mesh + " --mesh medium --out c.csv", "--mesh = 'medium': expected coarse, default or fine"},
+      {std::string("indent ") + tube + " --substrate yes --out c.csv", "--substrate = 'yes': expected on or off"},
+      {std::string("indent ") + tube + " --window-uN 4,0.4 --out c.csv", "--window-uN = '4,0.4'"},
+      {std::string("indent ") + tube + " --nu 0.6 --out c.csv", "--nu = '0.6': expected a Poisson ratio in [0, 0.5)"},
+      {std::string("indent ") + tube + " --depth-um 9 --out c.csv", "--depth-um = '9': expected a depth in [0, d0]"},
+      {std::string("indent ") + tube + " --field wall.vtk --out c.csv", "--field = 'wall.vtk': expected a file name ending in .xdmf"},
+      {std::string("indent ") + tube, "missing --out"},
+      {"eval --fidelity fast --rho-um 0.25 --k 2 --d-um 6.4 --d0-um 5.35 --h-nm 200", "--fidelity = 'fast': expected closed_form or shell_fe"},
+      {"eval --law stvk --rho-um 0.25 --k 2 --d-um 6.4 --d0-um 5.35", "--law needs --fidelity shell_fe"},
+      {"eval --fidelity shell_fe --rho-um 0.25 --k 2 --d-um 6.4 --d0-um 5.35", "--h-nm is required with --fidelity shell_fe"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.arguments);
+    const CliOutcome run = run_cli(c.arguments, scratch.root);
+    CHECK(run.exit_code == 2);
+    CHECK(run.err.find(c.expected) != std::string::npos);
+    CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+    CHECK(!fs::exists(scratch.root / "c.csv"));
+  }
+  // An existing curve is not replaced without --force.
+  std::ofstream(scratch.root / "c.csv") << "keep\n";
+  const CliOutcome refused = run_cli(std::string("indent ") + tube + " --out c.csv", scratch.root);
+  CHECK(refused.exit_code == 2);
+  CHECK(refused.err.find("--force") != std::string::npos);
+}
+
+TEST_CASE("indent --help tells the defaults and what h means") {
+  const ScratchDirectory scratch("indent_help");
+  const CliOutcome help = run_cli("indent --help", scratch.root);
+  REQUIRE(help.exit_code == 0);
+  CHECK(help.out.rfind("usage: growthuq indent", 0) == 0);
+  // The option descriptions are wrapped at 80 columns: compare with blanks collapsed.
+  std::string text_of_help;
+  for (char c : help.out) {
+    const bool blank = c == ' ' || c == '\n';
+    if (!blank || (!text_of_help.empty() && text_of_help.back() != ' ')) text_of_help += blank ? ' ' : c;
+  }
+  for (const char* text : {"TURGID", "(default 100;", "(default 10;", "0.4,4)", "coarse, default or fine (omitted: default", "(default 0.2"}) {
+    INFO(text);
+    CHECK(text_of_help.find(text) != std::string::npos);
+  }
+}

@@ -1,0 +1,98 @@
+// The whole model through the public API (coarse mesh: these test the scaling and the
+// inverse's consistency, not the mesh's accuracy): E x 10 at fixed p/E gives forces x 10, and
+// the inverse recovers the p and E a forward simulation was run at.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "fe/force_window.hpp"
+#include "growthuq/fe/indentation.hpp"
+
+using namespace growthuq;
+
+namespace {
+
+// Arabidopsis-like: d0 = 5.35 um, turgid h = 200 nm, p = 0.3 MPa, E = 30 MPa (p/E = 0.01,
+// d/d0 about 1.2), rho = 0.25 um.
+IndentationInput arabidopsis_like() {
+  IndentationInput input;
+  input.pressure = 0.3e6;
+  input.young = 30e6;
+  input.thickness = 200e-9;
+  input.plasmolysed_diameter = 5.35e-6;
+  input.instrument.probe_radius_m = 0.25e-6;
+  input.instrument.poisson_ratio = 0.2;
+  return input;
+}
+
+ShellFeOptions coarse() {
+  ShellFeOptions options;
+  options.mesh = ShellFeMesh::coarse;
+  return options;
+}
+
+}  // namespace
+
+TEST_CASE("shell_fe model: E x 10 at fixed p/E gives forces x 10 (and the same diameter)") {
+  IndentationInput input = arabidopsis_like();
+  input.depth = 1.0e-6;  // the same depth for both, so both runs take the same dimensionless steps
+  const ShellFeOptions options = coarse();
+  const IndentationCurve soft = indent(input, options);
+  input.pressure *= 10;
+  input.young *= 10;
+  const IndentationCurve stiff = indent(input, options);
+  REQUIRE(soft.status == ShellFeStatus::ok);
+  REQUIRE(stiff.status == ShellFeStatus::ok);
+  REQUIRE(soft.depth.size() == stiff.depth.size());
+  // Both solve the same dimensionless problem (p/E equal up to one rounding of 10p/10E); the
+  // solver converges each step to a gradient of 1e-9 of the force scale, so forces agree to
+  // that order: 1e-7 relative leaves two orders of room.
+  for (std::size_t i = 1; i < soft.depth.size(); ++i) {
+    CHECK(stiff.depth[i] == doctest::Approx(soft.depth[i]).epsilon(1e-12));
+    CHECK(stiff.force[i] == doctest::Approx(10 * soft.force[i]).epsilon(1e-7));
+  }
+  CHECK(stiff.turgid_diameter == doctest::Approx(soft.turgid_diameter).epsilon(1e-9));
+}
+
+TEST_CASE("shell_fe model: the inverse recovers the p and E of a forward simulation") {
+  const IndentationInput input = arabidopsis_like();
+  ShellFeOptions options = coarse();
+  // The inflation refinement stops at |d_FE/d - 1| <= tolerance; d ln(lambda)/d ln(p/E) is
+  // about ln(lambda) ~ 0.18 here, so 1e-8 in d gives about 6e-8 in p/E.
+  options.inflation_tolerance = 1e-8;
+  const IndentationCurve forward = indent(input, options);
+  REQUIRE(forward.status == ShellFeStatus::ok);
+  REQUIRE(forward.stiffness > 0);
+
+  ShellFeMeasurement tube;
+  tube.stiffness = forward.measured_stiffness;
+  tube.thickness = input.thickness;  // turgid, as measured
+  tube.diameter = forward.turgid_diameter;
+  tube.plasmolysed_diameter = input.plasmolysed_diameter;
+  const ShellFeInverse inverse = invert_indentation(tube, input.instrument, options);
+  INFO(inverse.message);
+  REQUIRE(inverse.status == ShellFeStatus::ok);
+  // What limits the round trip: (1) p/E from the inflation root, ~1e-7 (above); (2) E from
+  // Brent, 1e-10; (3) the inverse's curve is solved to another depth than the forward's, so
+  // its load steps differ, and k read from each curve carries the linear interpolation's
+  // O(step^2) error (test_force_window.cpp bounds it: 3 e / L with e the chord's deviation).
+  // (3) dominates; 2e-3 bounds it at the coarse mesh's steps (measured: see the commit).
+  CHECK(inverse.young == doctest::Approx(input.young).epsilon(2e-3));
+  CHECK(inverse.pressure == doctest::Approx(input.pressure).epsilon(2e-3));
+  CHECK(inverse.pressure_over_young == doctest::Approx(input.pressure / input.young).epsilon(1e-6));
+  CHECK(inverse.unstressed_thickness == doctest::Approx(forward.unstressed_thickness).epsilon(1e-6));
+  CHECK(inverse.fitted_stiffness == doctest::Approx(forward.stiffness).epsilon(1e-8));
+}
+
+TEST_CASE("shell_fe model: statuses, not exceptions, for measurements outside the model") {
+  const IndentationInput input = arabidopsis_like();
+  const ShellFeOptions options = coarse();
+  ShellFeMeasurement tube{2.0, 200e-9, 5.0e-6, 5.35e-6};  // d < d0
+  CHECK(invert_indentation(tube, input.instrument, options).status == ShellFeStatus::invalid_input);
+  tube = {2.0, 200e-9, 6.56e-6, 5.35e-6};
+  Instrument sensor = input.instrument;
+  sensor.sensor_stiffness_N_per_m = 1.5;
+  CHECK(invert_indentation(tube, sensor, options).status == ShellFeStatus::stiffness_at_sensor_limit);
+  tube = {2.0, 200e-9, 6.56e-6 * 100, 5.35e-6};  // d/d0 = 123: beyond any inflated state
+  CHECK(invert_indentation(tube, input.instrument, options).status == ShellFeStatus::no_inflation_state);
+}

@@ -1,0 +1,79 @@
+// Benchmark of the finite-element shell model on one core: one forward curve and one inverse
+// sample at an Arabidopsis-like tube, with the share of time in assembly, factorisation and
+// contact. Run by tools/bench-fe; prints `name = value` lines.
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "bench_timing.hpp"
+#include "growthuq/core/numbers.hpp"
+#include "growthuq/fe/indentation.hpp"
+
+using namespace growthuq;
+
+namespace {
+
+void print(const std::string& name, double value) { std::cout << name << " = " << format_double(value) << "\n"; }
+
+ShellFeMesh mesh_from(const std::string& text) {
+  return parse_shell_fe_mesh(text, "bench_fe", "--mesh");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ShellFeOptions options;
+  int repetitions = 1;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string flag = argv[i], value = argv[i + 1];
+    if (flag == "--mesh") options.mesh = mesh_from(value);
+    else if (flag == "--repetitions") repetitions = std::atoi(value.c_str());
+    else {
+      std::cerr << "bench_fe: unknown option " << flag << " (--mesh coarse|default|fine, --repetitions N)\n";
+      return 2;
+    }
+  }
+  // p = 0.3 MPa, E = 30 MPa, turgid h = 200 nm, d0 = 5.35 um, rho = 0.25 um: p/E = 0.01, d/d0 ~ 1.2.
+  IndentationInput input;
+  input.pressure = 0.3e6;
+  input.young = 30e6;
+  input.thickness = 200e-9;
+  input.plasmolysed_diameter = 5.35e-6;
+  input.instrument.probe_radius = 0.25e-6;
+
+  std::vector<double> forward_cpu, inverse_cpu;
+  IndentationCurve curve;
+  ShellFeInverse inverse;
+  for (int r = 0; r < repetitions; ++r) {
+    const double start = bench::thread_cpu_seconds();
+    curve = indent(input, options);
+    forward_cpu.push_back(bench::thread_cpu_seconds() - start);
+    if (curve.status != ShellFeStatus::ok) {
+      std::cerr << "bench_fe: forward status " << to_string(curve.status) << ": " << curve.message << "\n";
+      return 1;
+    }
+    const ShellFeMeasurement tube{curve.measured_stiffness, input.thickness, curve.turgid_diameter, input.plasmolysed_diameter};
+    const double inverse_start = bench::thread_cpu_seconds();
+    inverse = invert_indentation(tube, input.instrument, options);
+    inverse_cpu.push_back(bench::thread_cpu_seconds() - inverse_start);
+  }
+  std::cout << "mesh = " << to_string(options.mesh) << "\n";
+  print("forward_cpu_seconds", bench::median(forward_cpu));
+  print("forward_wall_seconds", curve.seconds);
+  print("forward_points", static_cast<double>(curve.depth.size()));
+  print("forward_newton_iterations", curve.newton_iterations);
+  const double solver = curve.seconds;
+  print("share_assembly", curve.seconds_assembly / solver);
+  print("share_factorisation", curve.seconds_factorisation / solver);
+  print("share_contact", curve.seconds_contact / solver);
+  print("k_N_per_m", curve.stiffness);
+  print("inverse_cpu_seconds", bench::median(inverse_cpu));
+  print("inverse_inflation_solves", inverse.inflation_solves);
+  print("inverse_newton_iterations", inverse.newton_iterations);
+  print("inverse_far_field_diameter_error", inverse.far_field_diameter_error);
+  print("inverse_E_relative_error", inverse.young / input.young - 1);
+  print("inverse_p_relative_error", inverse.pressure / input.pressure - 1);
+  std::cout << "inverse_status = " << to_string(inverse.status) << "\n";
+  return 0;
+}
