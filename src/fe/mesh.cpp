@@ -1,0 +1,321 @@
+#include "fe/mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <stdexcept>
+#include <tuple>
+#include <unordered_map>
+
+#include "growthuq/core/error.hpp"
+
+namespace growthuq::fe {
+namespace {
+
+using Eigen::Vector3d;
+using Projection = std::function<Vector3d(const Vector3d&)>;
+constexpr double radius = 0.5;  // of the unit-diameter tube and sphere
+
+// Points are merged by their coordinates rounded to 1e-10 (the generators place shared points
+// by the same arithmetic, so they agree to round-off).
+struct PointKey {
+  long long x, y, z;
+  bool operator<(const PointKey& other) const {
+    return std::tie(x, y, z) < std::tie(other.x, other.y, other.z);
+  }
+};
+PointKey key_of(const Vector3d& p) {
+  auto q = [](double v) { return static_cast<long long>(std::llround(v * 1e10)); };
+  return {q(p.x()), q(p.y()), q(p.z())};
+}
+
+class MeshBuilder {
+ public:
+  int add_point(const Vector3d& p) {
+    auto [it, inserted] = index_.try_emplace(key_of(p), static_cast<int>(points_.size()));
+    if (inserted) points_.push_back(p);
+    return it->second;
+  }
+  void add_face(int a, int b, int c) { faces_.push_back({a, b, c}); }
+  std::vector<Vector3d>& points() { return points_; }
+  std::vector<std::array<int, 3>>& faces() { return faces_; }
+
+ private:
+  std::map<PointKey, int> index_;
+  std::vector<Vector3d> points_;
+  std::vector<std::array<int, 3>> faces_;
+};
+
+// One octant face A, B, C (unit vectors) of the octahedron, subdivided n times and mapped to the
+// sphere of `radius` about `centre`. The barycentric coordinates are warped by sin(pi/2 t)
+// before normalising so that the nodes along each octant edge are equally spaced in angle.
+void add_octant(MeshBuilder& builder, const Vector3d& a, const Vector3d& b, const Vector3d& c,
+                int n, const Vector3d& centre, double sphere_radius) {
+  const double half_pi = std::numbers::pi / 2;
+  auto point = [&](int i, int j) {
+    const double tb = static_cast<double>(i) / n, tc = static_cast<double>(j) / n;
+    const double ta = static_cast<double>(n - i - j) / n;  // exactly 0 on the edge B-C
+    Vector3d p = std::sin(half_pi * ta) * a + std::sin(half_pi * tb) * b +
+                 std::sin(half_pi * tc) * c;
+    return builder.add_point(centre + sphere_radius * p.normalized());
+  };
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i + j < n; ++i) {
+      builder.add_face(point(i, j), point(i + 1, j), point(i, j + 1));
+      if (i + j + 1 < n) builder.add_face(point(i + 1, j), point(i + 1, j + 1), point(i, j + 1));
+    }
+  }
+}
+
+// Conforming refinement by longest-edge bisection (Rivara 1984): every edge longer than the
+// size field at its midpoint is marked, each face with a marked edge also marks its longest
+// edge (so that faces are always cut through their longest edge, which bounds the angles),
+// then each face is bisected once, twice or three times. Midpoints are projected onto the
+// exact surface. Repeated until every edge fits the size field.
+void refine(std::vector<Vector3d>& points, std::vector<std::array<int, 3>>& faces,
+            const std::function<double(const Vector3d&)>& size, const Projection& project,
+            int max_faces) {
+  for (int pass = 0; pass < 64; ++pass) {
+    std::unordered_map<long long, int> edge_index;
+    std::vector<std::array<int, 2>> edges;
+    std::vector<std::array<int, 3>> face_edges(faces.size());
+    const long long stride = static_cast<long long>(points.size());
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      for (int k = 0; k < 3; ++k) {
+        const int u = faces[f][(k + 1) % 3], v = faces[f][(k + 2) % 3];
+        const long long key = std::min(u, v) * stride + std::max(u, v);
+        auto [it, inserted] = edge_index.try_emplace(key, static_cast<int>(edges.size()));
+        if (inserted) edges.push_back({u, v});
+        face_edges[f][k] = it->second;
+      }
+    }
+    std::vector<double> length(edges.size());
+    std::vector<char> marked(edges.size(), 0);
+    bool any = false;
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      const Vector3d& p = points[edges[e][0]];
+      const Vector3d& q = points[edges[e][1]];
+      length[e] = (p - q).norm();
+      if (length[e] > size(0.5 * (p + q))) marked[e] = 1, any = true;
+    }
+    if (!any) return;
+    auto longest = [&](std::size_t f) {
+      int best = 0;
+      for (int k = 1; k < 3; ++k) {
+        const int e = face_edges[f][k], b = face_edges[f][best];
+        if (length[e] > length[b] || (length[e] == length[b] && e < b)) best = k;
+      }
+      return best;
+    };
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (std::size_t f = 0; f < faces.size(); ++f) {
+        const auto& fe = face_edges[f];
+        if (!(marked[fe[0]] || marked[fe[1]] || marked[fe[2]])) continue;
+        const int l = fe[longest(f)];
+        if (!marked[l]) marked[l] = 1, changed = true;
+      }
+    }
+    std::vector<int> midpoint(edges.size(), -1);
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      if (!marked[e]) continue;
+      midpoint[e] = static_cast<int>(points.size());
+      points.push_back(project(0.5 * (points[edges[e][0]] + points[edges[e][1]])));
+    }
+    std::vector<std::array<int, 3>> refined;
+    refined.reserve(faces.size() * 2);
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      const auto& fe = face_edges[f];
+      const int k = longest(f);
+      const int m = midpoint[fe[k]];
+      if (m < 0) {
+        refined.push_back(faces[f]);
+        continue;
+      }
+      const int v0 = faces[f][k], v1 = faces[f][(k + 1) % 3], v2 = faces[f][(k + 2) % 3];
+      const int q = midpoint[fe[(k + 2) % 3]];  // on v0-v1
+      const int r = midpoint[fe[(k + 1) % 3]];  // on v2-v0
+      if (q < 0) {
+        refined.push_back({v0, v1, m});
+      } else {
+        refined.push_back({q, v1, m});
+        refined.push_back({v0, q, m});
+      }
+      if (r < 0) {
+        refined.push_back({v0, m, v2});
+      } else {
+        refined.push_back({v0, m, r});
+        refined.push_back({r, m, v2});
+      }
+    }
+    faces = std::move(refined);
+    if (static_cast<int>(faces.size()) > max_faces) {
+      throw InputError("mesh", "the graded mesh exceeds " + std::to_string(max_faces) +
+                                   " triangles: expected a coarser size field (probe radius "
+                                   "or wall thickness too small for the mesh level)");
+    }
+  }
+}
+
+std::function<double(const Vector3d&)> size_field(const MeshSizing& sizing, const Vector3d& focus) {
+  return [sizing, focus](const Vector3d& p) {
+    const double d = std::max(0.0, (p - focus).norm() - sizing.fine_radius);
+    return std::min(sizing.coarsest, sizing.finest + sizing.grading * d);
+  };
+}
+
+TriangleMesh to_mesh(const std::vector<Vector3d>& points, std::vector<std::array<int, 3>> faces) {
+  TriangleMesh mesh;
+  mesh.positions.resize(3, static_cast<Eigen::Index>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) mesh.positions.col(static_cast<Eigen::Index>(i)) = points[i];
+  mesh.faces = std::move(faces);
+  return mesh;
+}
+
+void check_sizing(const MeshSizing& s) {
+  if (!(s.finest > 0 && s.coarsest >= s.finest && s.grading > 0 && s.fine_radius >= 0)) {
+    throw InputError("mesh", "sizing: expected 0 < finest <= coarsest, grading > 0");
+  }
+}
+
+
+// The full model as the half model and its mirror image in y = 0 (nodes on the plane shared),
+// so that the two models discretise the same surface and the full one is exactly symmetric.
+TriangleMesh mirrored(const TriangleMesh& half) {
+  const Eigen::Index n = half.positions.cols();
+  std::vector<int> image(static_cast<std::size_t>(n));
+  std::vector<Vector3d> points;
+  for (Eigen::Index v = 0; v < n; ++v) points.push_back(half.positions.col(v));
+  for (Eigen::Index v = 0; v < n; ++v) {
+    if (std::fabs(half.positions(1, v)) <= 1e-12) {
+      image[static_cast<std::size_t>(v)] = static_cast<int>(v);
+    } else {
+      image[static_cast<std::size_t>(v)] = static_cast<int>(points.size());
+      points.emplace_back(half.positions(0, v), -half.positions(1, v), half.positions(2, v));
+    }
+  }
+  std::vector<std::array<int, 3>> faces = half.faces;
+  for (const auto& f : half.faces) {
+    // A reflection reverses orientation: swap two vertices to keep the faces outward.
+    faces.push_back({image[static_cast<std::size_t>(f[0])], image[static_cast<std::size_t>(f[2])],
+                     image[static_cast<std::size_t>(f[1])]});
+  }
+  return to_mesh(points, std::move(faces));
+}
+
+}  // namespace
+
+MeshSizing mesh_sizing(MeshLevel level, double probe_radius, double thickness) {
+  const double bending_length = std::sqrt(thickness * 0.5);
+  const double scale = level == MeshLevel::coarse ? 1.0
+                       : level == MeshLevel::standard ? std::numbers::sqrt2 / 2
+                                                      : 0.5;
+  MeshSizing s;
+  s.finest = 0.5 * scale * std::min(probe_radius, bending_length);
+  s.fine_radius = 1.5 * std::max(probe_radius, bending_length);
+  s.grading = 0.5 * scale;
+  s.coarsest = std::max(0.2 * scale, s.finest);
+  return s;
+}
+
+TriangleMesh make_tube_mesh(double length, double probe_distance, bool half_model,
+                            const MeshSizing& sizing) {
+  check_sizing(sizing);
+  const double cap_base = length - radius;
+  if (!(cap_base > 0)) throw InputError("mesh", "tube length: expected L/d0 > 1/2");
+  // The coarse mesh: octant patches whose edges are about `coarsest` long.
+  const int n = std::max(2, static_cast<int>(std::ceil(std::numbers::pi * radius / 2 / sizing.coarsest)));
+  MeshBuilder builder;
+  const Vector3d centre(0, 0, cap_base);
+  const Vector3d ex(1, 0, 0), ey(0, 1, 0), ez(0, 0, 1);
+  add_octant(builder, ex, ey, ez, n, centre, radius);
+  add_octant(builder, ey, -ex, ez, n, centre, radius);
+  // The cap's equator, ordered by angle from +x (counter-clockwise seen from +z).
+  std::vector<std::pair<double, Vector3d>> equator;
+  for (const Vector3d& p : builder.points()) {
+    if (std::fabs(p.z() - cap_base) < 1e-12) {
+      Vector3d q = p;
+      q.z() = 0;
+      double angle = std::atan2(q.y(), q.x());
+      if (angle < -1e-12) angle += 2 * std::numbers::pi;
+      equator.emplace_back(angle, q);
+    }
+  }
+  std::sort(equator.begin(), equator.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  const int columns = static_cast<int>(equator.size());  // 2n + 1, from angle 0 to pi
+  const int rings = std::max(1, static_cast<int>(std::ceil(cap_base / (std::numbers::pi * radius / 2 / n))));
+  std::vector<std::vector<int>> ring_nodes(rings + 1);
+  for (int r = 0; r <= rings; ++r) {
+    const double z = r == rings ? cap_base : cap_base * r / rings;
+    for (const auto& [angle, q] : equator) {
+      ring_nodes[r].push_back(builder.add_point(Vector3d(q.x(), q.y(), z)));
+    }
+  }
+  for (int r = 0; r < rings; ++r) {
+    for (int c = 0; c + 1 < columns; ++c) {
+      const int c1 = c + 1;
+      const int a = ring_nodes[r][c], b = ring_nodes[r][c1];
+      const int d = ring_nodes[r + 1][c], e = ring_nodes[r + 1][c1];
+      // Alternating diagonals, so that the coarse mesh has no preferred direction.
+      if ((r + c) % 2 == 0) {
+        builder.add_face(a, b, e), builder.add_face(a, e, d);
+      } else {
+        builder.add_face(a, b, d), builder.add_face(b, e, d);
+      }
+    }
+  }
+  const double probe_z = length - probe_distance;
+  Vector3d focus(radius, 0, probe_z);
+  if (probe_z > cap_base) {
+    const double dz = std::min(probe_z - cap_base, radius);
+    focus = Vector3d(std::sqrt(radius * radius - dz * dz), 0, cap_base + dz);
+  }
+  auto project = [cap_base](const Vector3d& p) {
+    if (p.z() <= cap_base) {
+      const double r = std::hypot(p.x(), p.y());
+      return Vector3d(p.x() * radius / r, p.y() * radius / r, p.z());
+    }
+    const Vector3d c(0, 0, cap_base);
+    return Vector3d(c + radius * (p - c).normalized());
+  };
+  refine(builder.points(), builder.faces(), size_field(sizing, focus), project, sizing.max_faces);
+  TriangleMesh half = to_mesh(builder.points(), builder.faces());
+  return half_model ? half : mirrored(half);
+}
+
+TriangleMesh make_sphere_mesh(bool half_model, const MeshSizing& sizing) {
+  check_sizing(sizing);
+  const int n = std::max(2, static_cast<int>(std::ceil(std::numbers::pi * radius / 2 / sizing.coarsest)));
+  MeshBuilder builder;
+  const Vector3d o(0, 0, 0), ex(1, 0, 0), ey(0, 1, 0), ez(0, 0, 1);
+  for (double sz : {1.0, -1.0}) {
+    for (double sx : {1.0, -1.0}) {
+      // Octant (sx ex, ey, sz ez), ordered counter-clockwise seen from outside.
+      const Vector3d a = sx * ex, c = sz * ez;
+      if (sx * sz > 0) add_octant(builder, a, ey, c, n, o, radius);
+      else add_octant(builder, ey, a, c, n, o, radius);
+    }
+  }
+  auto project = [](const Vector3d& p) { return Vector3d(radius * p.normalized()); };
+  refine(builder.points(), builder.faces(), size_field(sizing, Vector3d(radius, 0, 0)), project,
+         sizing.max_faces);
+  TriangleMesh half = to_mesh(builder.points(), builder.faces());
+  return half_model ? half : mirrored(half);
+}
+
+EdgeLengthRange edge_length_range(const TriangleMesh& mesh) {
+  EdgeLengthRange range{std::numeric_limits<double>::infinity(), 0.0};
+  for (const auto& f : mesh.faces) {
+    for (int k = 0; k < 3; ++k) {
+      const double l = (mesh.positions.col(f[k]) - mesh.positions.col(f[(k + 1) % 3])).norm();
+      range.shortest = std::min(range.shortest, l);
+      range.longest = std::max(range.longest, l);
+    }
+  }
+  return range;
+}
+
+}  // namespace growthuq::fe

@@ -1,0 +1,147 @@
+// The generated meshes: on the exact surface, closed or bounded where they should be,
+// consistently oriented, graded as asked, the enclosed volume converging at second order.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include "fe/mesh.hpp"
+#include "fe/pressure.hpp"
+#include "growthuq/core/error.hpp"
+
+using namespace growthuq::fe;
+
+namespace {
+
+// Directed-edge census: every directed edge used once (consistent orientation); returns the
+// undirected boundary edges (used in one direction only).
+std::vector<std::array<int, 2>> boundary_edges(const TriangleMesh& mesh) {
+  std::map<std::pair<int, int>, int> directed;
+  for (const auto& f : mesh.faces) {
+    for (int k = 0; k < 3; ++k) {
+      const int count = ++directed[{f[k], f[(k + 1) % 3]}];
+      REQUIRE(count == 1);
+    }
+  }
+  std::vector<std::array<int, 2>> boundary;
+  for (const auto& [edge, count] : directed) {
+    if (!directed.count({edge.second, edge.first})) boundary.push_back({edge.first, edge.second});
+  }
+  return boundary;
+}
+
+double min_angle_degrees(const TriangleMesh& mesh) {
+  double smallest = 180.0;
+  for (const auto& f : mesh.faces) {
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d a = mesh.positions.col(f[(k + 1) % 3]) - mesh.positions.col(f[k]);
+      const Eigen::Vector3d b = mesh.positions.col(f[(k + 2) % 3]) - mesh.positions.col(f[k]);
+      smallest = std::min(smallest, std::acos(a.normalized().dot(b.normalized())) * 180 / std::numbers::pi);
+    }
+  }
+  return smallest;
+}
+
+}  // namespace
+
+TEST_CASE("half tube mesh: nodes on the capped tube, open only on y = 0 and z = 0, graded under the probe") {
+  const double L = 10.0, a = 1.0;
+  const MeshSizing sizing = mesh_sizing(MeshLevel::standard, 0.05, 0.02);
+  const TriangleMesh mesh = make_tube_mesh(L, a, true, sizing);
+  const double cap_base = L - 0.5;
+  for (Eigen::Index v = 0; v < mesh.positions.cols(); ++v) {
+    const Eigen::Vector3d p = mesh.positions.col(v);
+    CHECK(p.y() >= 0.0);
+    const double r = p.z() <= cap_base ? std::hypot(p.x(), p.y()) : (p - Eigen::Vector3d(0, 0, cap_base)).norm();
+    CHECK(r == doctest::Approx(0.5).epsilon(1e-12));
+  }
+  for (const auto& e : boundary_edges(mesh)) {
+    const Eigen::Vector3d p = mesh.positions.col(e[0]), q = mesh.positions.col(e[1]);
+    const bool mirror = p.y() == 0.0 && q.y() == 0.0, end = p.z() == 0.0 && q.z() == 0.0;
+    CHECK((mirror || end));
+  }
+  // Outward: the volume is half the capped cylinder's, pi r^2 (L - r) + (2/3) pi r^3, to the
+  // chord error of the coarse far field (edges <= 0.14: relative error ~ (0.14/2/0.5)^2/3).
+  const double exact = 0.5 * (std::numbers::pi * 0.25 * cap_base + 2.0 / 3 * std::numbers::pi * 0.125);
+  CHECK(enclosed_volume(mesh.positions, mesh.faces) == doctest::Approx(exact).epsilon(0.01));
+  // Every edge fits the size field; the finest edges are where the probe touches.
+  const Eigen::Vector3d focus(0.5, 0, L - a);
+  double shortest_far = 1.0, longest_near = 0.0;
+  for (const auto& f : mesh.faces) {
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d p = mesh.positions.col(f[k]), q = mesh.positions.col(f[(k + 1) % 3]);
+      const double d = (0.5 * (p + q) - focus).norm();
+      const double allowed = std::min(sizing.coarsest, sizing.finest + sizing.grading * std::max(0.0, d - sizing.fine_radius));
+      CHECK((p - q).norm() <= allowed * (1 + 1e-9));
+      if (d < sizing.fine_radius) longest_near = std::max(longest_near, (p - q).norm());
+      if (d > 2.0) shortest_far = std::min(shortest_far, (p - q).norm());
+    }
+  }
+  CHECK(longest_near <= sizing.finest * (1 + 1e-9));
+  CHECK(shortest_far > 2 * sizing.finest);
+  // Longest-edge bisection of a near-equilateral mesh keeps angles bounded away from 0.
+  CHECK(min_angle_degrees(mesh) > 20.0);
+  // The apex is a node of a few triangles (the octant patch, perhaps bisected), not a fan.
+  int apex_faces = 0;
+  for (const auto& f : mesh.faces) {
+    for (int v : f) apex_faces += mesh.positions(2, v) == doctest::Approx(L).epsilon(1e-14) ? 1 : 0;
+  }
+  CHECK(apex_faces >= 2);
+  CHECK(apex_faces <= 4);
+}
+
+TEST_CASE("full tube mesh is the half and its mirror image: volume exactly twice") {
+  const MeshSizing sizing = mesh_sizing(MeshLevel::coarse, 0.1, 0.02);
+  const TriangleMesh half = make_tube_mesh(6.0, 1.0, true, sizing);
+  const TriangleMesh full = make_tube_mesh(6.0, 1.0, false, sizing);
+  CHECK(full.faces.size() == 2 * half.faces.size());
+  for (const auto& e : boundary_edges(full)) {
+    CHECK(full.positions(2, e[0]) == 0.0);
+    CHECK(full.positions(2, e[1]) == 0.0);
+  }
+  CHECK(enclosed_volume(full.positions, full.faces) ==
+        doctest::Approx(2 * enclosed_volume(half.positions, half.faces)).epsilon(1e-13));
+}
+
+TEST_CASE("sphere volume converges to 4/3 pi r^3 at second order in the edge length") {
+  // Uniform meshes (finest = coarsest); the inscribed polyhedron's volume error is
+  // proportional to h^2 (chord sagitta), so halving h divides the error by about 4.
+  std::vector<double> errors;
+  for (double h : {0.2, 0.1, 0.05}) {
+    MeshSizing uniform{h, 0.0, 1.0, h};
+    const TriangleMesh mesh = make_sphere_mesh(false, uniform);
+    CHECK(boundary_edges(mesh).empty());
+    const double exact = 4.0 / 3 * std::numbers::pi * 0.125;
+    const double volume = enclosed_volume(mesh.positions, mesh.faces);
+    CHECK(volume < exact);  // inscribed
+    errors.push_back((exact - volume) / exact);
+    const TriangleMesh half = make_sphere_mesh(true, uniform);
+    CHECK(2 * enclosed_volume(half.positions, half.faces) == doctest::Approx(volume).epsilon(1e-13));
+  }
+  const double order1 = std::log2(errors[0] / errors[1]), order2 = std::log2(errors[1] / errors[2]);
+  CHECK(order1 == doctest::Approx(2.0).epsilon(0.15));
+  CHECK(order2 == doctest::Approx(2.0).epsilon(0.1));
+}
+
+TEST_CASE("sphere mesh is graded around the pole +x") {
+  const MeshSizing sizing = mesh_sizing(MeshLevel::standard, 0.02, 0.005);
+  const TriangleMesh mesh = make_sphere_mesh(true, sizing);
+  double nearest = 1.0;
+  for (Eigen::Index v = 0; v < mesh.positions.cols(); ++v) {
+    CHECK(mesh.positions.col(v).norm() == doctest::Approx(0.5).epsilon(1e-12));
+    if (v > 0) nearest = std::min(nearest, (mesh.positions.col(v) - Eigen::Vector3d(0.5, 0, 0)).norm());
+  }
+  CHECK(mesh_sizing(MeshLevel::standard, 0.02, 0.005).finest < std::sqrt(0.005 * 0.5) / 4);
+  CHECK(min_angle_degrees(mesh) > 20.0);
+}
+
+TEST_CASE("mesh sizing: each level sqrt(2) finer, the finest size below probe radius and bending length") {
+  const MeshSizing c = mesh_sizing(MeshLevel::coarse, 0.05, 0.02);
+  const MeshSizing s = mesh_sizing(MeshLevel::standard, 0.05, 0.02);
+  const MeshSizing f = mesh_sizing(MeshLevel::fine, 0.05, 0.02);
+  CHECK(c.finest / s.finest == doctest::Approx(std::sqrt(2.0)));
+  CHECK(s.finest / f.finest == doctest::Approx(std::sqrt(2.0)));
+  CHECK(c.finest <= 0.5 * 0.05);
+  CHECK(c.fine_radius >= std::sqrt(0.01));
+}
