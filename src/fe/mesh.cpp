@@ -160,10 +160,13 @@ void refine(std::vector<Vector3d>& points, std::vector<std::array<int, 3>>& face
   }
 }
 
+// The isotropic size field, and the longest edge an elongated far-field triangle of the tube
+// may have (its diagonal), so that the refinement leaves those alone.
 std::function<double(const Vector3d&)> size_field(const MeshSizing& sizing, const Vector3d& focus) {
-  return [sizing, focus](const Vector3d& p) {
+  const double limit = sizing.coarsest * std::sqrt(1 + sizing.far_aspect * sizing.far_aspect);
+  return [sizing, focus, limit](const Vector3d& p) {
     const double d = std::max(0.0, (p - focus).norm() - sizing.fine_radius);
-    return std::min(sizing.coarsest, sizing.finest + sizing.grading * d);
+    return std::min(limit, sizing.finest + sizing.grading * d);
   };
 }
 
@@ -215,7 +218,7 @@ MeshSizing mesh_sizing(MeshLevel level, double probe_radius, double thickness) {
                                                       : 0.5;
   MeshSizing s;
   s.finest = 0.5 * scale * std::min(probe_radius, bending_length);
-  s.fine_radius = 1.5 * std::max(probe_radius, bending_length);
+  s.fine_radius = std::max(2 * probe_radius, 0.25 * bending_length);
   s.grading = 0.5 * scale;
   s.coarsest = std::max(0.2 * scale, s.finest);
   return s;
@@ -246,10 +249,30 @@ TriangleMesh make_tube_mesh(double length, double probe_distance, bool half_mode
   }
   std::sort(equator.begin(), equator.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   const int columns = static_cast<int>(equator.size());  // 2n + 1, from angle 0 to pi
-  const int rings = std::max(1, static_cast<int>(std::ceil(cap_base / (std::numbers::pi * radius / 2 / n))));
+  // Rings from the cap's equator down to the open end: one circumferential spacing apart near
+  // the probe, up to `far_aspect` spacings far from it, where the wall only inflates (uniform
+  // along z) and elongated triangles represent it as well as isotropic ones.
+  const double spacing = std::numbers::pi * radius / 2 / n;
+  const double probe_z = length - probe_distance;
+  const auto ring_spacing = [&](double z) {
+    const double d = std::max(0.0, std::fabs(z - probe_z) - sizing.fine_radius);
+    const double h = sizing.finest + sizing.grading * d;  // the size field along the meridian
+    const double axial = std::sqrt(std::max(0.0, h * h - spacing * spacing));
+    return std::clamp(axial, spacing, sizing.far_aspect * spacing);
+  };
+  std::vector<double> ring_z = {cap_base};
+  while (ring_z.back() > 1e-9 && ring_z.size() < 100000) ring_z.push_back(ring_z.back() - ring_spacing(ring_z.back()));
+  if (ring_z.size() > 2 && ring_z.back() < 0 && -ring_z.back() > 0.5 * (ring_z[ring_z.size() - 2] - ring_z.back())) {
+    ring_z.pop_back();  // the last ring is closer to the end than half a spacing: merge them
+  }
+  const double span = cap_base - ring_z.back();
+  for (double& z : ring_z) z = cap_base - (cap_base - z) * cap_base / span;
+  ring_z.back() = 0.0;
+  std::reverse(ring_z.begin(), ring_z.end());
+  const int rings = static_cast<int>(ring_z.size()) - 1;
   std::vector<std::vector<int>> ring_nodes(rings + 1);
   for (int r = 0; r <= rings; ++r) {
-    const double z = r == rings ? cap_base : cap_base * r / rings;
+    const double z = r == rings ? cap_base : ring_z[static_cast<std::size_t>(r)];
     for (const auto& [angle, q] : equator) {
       ring_nodes[r].push_back(builder.add_point(Vector3d(q.x(), q.y(), z)));
     }
@@ -267,7 +290,6 @@ TriangleMesh make_tube_mesh(double length, double probe_distance, bool half_mode
       }
     }
   }
-  const double probe_z = length - probe_distance;
   Vector3d focus(radius, 0, probe_z);
   if (probe_z > cap_base) {
     const double dz = std::min(probe_z - cap_base, radius);

@@ -20,12 +20,15 @@ struct TriangleMesh {
 };
 
 // Element sizes of a graded mesh: `finest` within `fine_radius` of the focus point (where the
-// probe touches), growing linearly by `grading` per unit distance beyond it, up to `coarsest`.
+// probe touches), growing linearly by `grading` per unit distance beyond it, up to `coarsest`
+// around the circumference; along the tube's cylinder, far from the probe, rings may be up to
+// `far_aspect` times `coarsest` apart (the inflated cylinder is uniform along its axis).
 struct MeshSizing {
   double finest = 0.02;
   double fine_radius = 0.1;
   double grading = 0.35;
   double coarsest = 0.14;
+  double far_aspect = 2.5;
   int max_faces = 400000;  // refusing a mesh beyond this bounds time and memory
 };
 

@@ -17,10 +17,11 @@ double seconds_since(Clock::time_point start) {
 
 }  // namespace
 
-// CHOLMOD's supernodal LL^T of the lower triangle; the symbolic analysis (fill-reducing
+// CHOLMOD's simplicial LL^T (faster than its supernodal one with Debian's reference BLAS at
+// these sizes: 18 against 34 ms for 1311 dofs, 76 against 127 ms for 2703, on a loaded machine) of the lower triangle; the symbolic analysis (fill-reducing
 // ordering, supernodes) is done once for the assembly's pattern.
 struct NewtonSolver::Factor {
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
+  Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
 };
 
 NewtonSolver::NewtonSolver(const ShellAssembly& assembly)
@@ -63,7 +64,9 @@ NewtonReport NewtonSolver::minimise(Eigen::Matrix3Xd& x, const NewtonOptions& op
     double mean_diagonal = 0.0;
     for (Eigen::Index c = 0; c < n; ++c) mean_diagonal += std::fabs(hessian_.coeff(c, c));
     mean_diagonal = std::max(mean_diagonal / static_cast<double>(n), 1e-300);
-    double shift = last_shift_ > 0 ? last_shift_ / 4 : 0.0;
+    // The unshifted Hessian first (Newton's quadratic convergence where it is positive
+    // definite); then a shift from a quarter of the last one that worked, grown tenfold.
+    double shift = 0.0;
     bool factorised = false;
     for (int attempt = 0; attempt <= options.max_shifts; ++attempt) {
       factor_->llt.setShift(shift);
@@ -73,7 +76,7 @@ NewtonReport NewtonSolver::minimise(Eigen::Matrix3Xd& x, const NewtonOptions& op
         factorised = true;
         break;
       }
-      shift = shift == 0.0 ? 1e-8 * mean_diagonal : 10 * shift;
+      shift = shift == 0.0 ? std::max(last_shift_ / 4, 1e-8 * mean_diagonal) : 10 * shift;
     }
     if (!factorised) {
       timing_.factorisation += seconds_since(start);

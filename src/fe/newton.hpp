@@ -1,5 +1,5 @@
 // Newton's method for the minimum of the total potential energy: a sparse Cholesky
-// factorisation (CHOLMOD, supernodal, its symbolic analysis done once for the assembly's fixed
+// factorisation (CHOLMOD, simplicial LL^T, its symbolic analysis done once for the assembly's fixed
 // pattern), an indefinite Hessian regularised by a diagonal shift grown until it factorises,
 // and a backtracking line search on the energy (Armijo). Converged when the largest gradient
 // entry is below a tolerance relative to the wall's nodal force scale.
@@ -16,7 +16,7 @@ namespace growthuq::fe {
 
 struct NewtonOptions {
   int max_iterations = 40;
-  double gradient_tolerance = 1e-9;  // max |gradient| / force_scale
+  double gradient_tolerance = 1e-8;  // max |gradient| / force_scale
   double max_step = 0.25;            // largest nodal move of one iteration, / d0
   int max_line_search = 40;
   int max_shifts = 30;

@@ -72,7 +72,8 @@ TEST_CASE("half tube mesh: nodes on the capped tube, open only on y = 0 and z = 
     for (int k = 0; k < 3; ++k) {
       const Eigen::Vector3d p = mesh.positions.col(f[k]), q = mesh.positions.col(f[(k + 1) % 3]);
       const double d = (0.5 * (p + q) - focus).norm();
-      const double allowed = std::min(sizing.coarsest, sizing.finest + sizing.grading * std::max(0.0, d - sizing.fine_radius));
+      const double limit = sizing.coarsest * std::sqrt(1 + sizing.far_aspect * sizing.far_aspect);
+      const double allowed = std::min(limit, sizing.finest + sizing.grading * std::max(0.0, d - sizing.fine_radius));
       CHECK((p - q).norm() <= allowed * (1 + 1e-9));
       if (d < sizing.fine_radius) longest_near = std::max(longest_near, (p - q).norm());
       if (d > 2.0) shortest_far = std::min(shortest_far, (p - q).norm());

@@ -1,0 +1,68 @@
+// The forward indentation protocol of the shell model: inflate the wall from its plasmolysed
+// (unstressed) state to p/E, measure the turgid state, place the substrate under it, then press
+// the rigid probe in -x, displacement-controlled, recording force against depth. Dimensionless:
+// lengths / d0, stresses / E, forces / (E d0^2).
+#pragma once
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+#include "fe/material_law.hpp"
+#include "fe/membrane.hpp"
+#include "fe/mesh.hpp"
+#include "fe/status.hpp"
+
+namespace growthuq::fe {
+
+struct ForwardProblem {            // all dimensionless
+  Geometry geometry = Geometry::tube;
+  std::string mesh_file;           // Geometry::file only (closed triangulated surface)
+  double pressure = 0.0;           // p/E
+  double thickness = 0.0;          // h0/d0
+  double poisson = 0.2;
+  MaterialLaw law = MaterialLaw::hencky;
+  double probe_radius = 0.0;       // rho/d0
+  double tube_length = 0.0;        // L/d0 (tube only)
+  double probe_distance = 0.0;     // a/d0 behind the apex (tube only)
+  double max_depth = 0.0;          // deepest indentation, / d0
+  bool substrate = true;
+  bool bending = true;
+  bool half_model = true;
+  MeshLevel mesh = MeshLevel::standard;
+};
+
+struct ForwardResult {
+  FeStatus status = FeStatus::ok;
+  std::string message;             // why, when status != ok
+  std::vector<double> depth;       // indentation delta / d0, starting at 0
+  std::vector<double> force;       // F / (E d0^2), whole tube (half model doubled)
+  std::vector<double> contact_radius;  // / d0
+  double turgid_diameter = 0.0;    // / d0, far from tip and ends (tube), or sphere diameter
+  double axial_stretch = 0.0;      // tube only
+  double thickness_stretch = 0.0;  // h/h0 there
+  int newton_iterations = 0;
+  double seconds_assembly = 0, seconds_factorisation = 0, seconds_contact = 0;
+  // Final state for field output: mesh, deformed positions, per-face stresses.
+  TriangleMesh mesh;
+  Eigen::Matrix3Xd deformed;
+  std::vector<MembraneStress> face_stress;
+};
+
+// Inflate to `pressure`, then indent to `max_depth`. A pure function of its input: no global
+// state, safe to call concurrently from several threads or processes. Never throws for a
+// numerical failure (status instead); throws InputError only for an unreadable mesh file.
+//
+// Supports. tube: the ring z = 0 pinned; half model: y = 0 nodes keep y = 0. The substrate,
+// if on, is the plane x = min x of the inflated wall. sphere: the probe presses at the pole +x;
+// the great circle x = 0 is held in x (the symmetry plane of a sphere squeezed between two
+// equal probes, so the depth is the pole's own deflection), rotations and the z translation are
+// held at single nodes on the axes; no substrate. file: the node of least x is pinned, the node
+// of largest x (where the probe presses) held in y and z, the node of largest z held in y; the
+// substrate as for the tube.
+ForwardResult simulate_forward(const ForwardProblem&);
+// Inflation alone (for the inverse's 1-D root on the turgid diameter, and validation).
+ForwardResult simulate_inflation(const ForwardProblem&);
+
+}  // namespace growthuq::fe
