@@ -55,7 +55,7 @@ TEST_CASE("indent: the curve and the name = value lines, as the library computes
   input.young = 30e6;
   input.thickness = 200e-9;
   input.plasmolysed_diameter = 5.35e-6;
-  input.instrument.probe_radius = 0.25e-6;
+  input.instrument.probe_radius_m = 0.25e-6;
   ShellFeOptions options;
   options.mesh = ShellFeMesh::coarse;
   const IndentationCurve curve = indent(input, options);

@@ -1,6 +1,6 @@
 // Benchmark of the finite-element shell model on one core: one forward curve and one inverse
 // sample at an Arabidopsis-like tube, with the share of time in assembly, factorisation and
-// contact. Run by tools/bench-fe; prints `name = value` lines.
+// contact. Run by tools/bench/bench-fe; prints `name = value` lines.
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
   input.young = 30e6;
   input.thickness = 200e-9;
   input.plasmolysed_diameter = 5.35e-6;
-  input.instrument.probe_radius = 0.25e-6;
+  input.instrument.probe_radius_m = 0.25e-6;
 
   std::vector<double> forward_cpu, inverse_cpu;
   IndentationCurve curve;
