@@ -102,8 +102,7 @@ IndentationCurve indent(const IndentationInput& input, const ShellFeOptions& opt
     const fe::WindowFit fit = fe::fit_force_window(curve.depth, curve.force, low, high);
     if (fit.status == fe::WindowFitStatus::ok) {
       curve.stiffness = fit.slope;
-      const double k_sys = input.instrument.sensor_stiffness_N_per_m;
-      curve.measured_stiffness = fit.slope / (1.0 + fit.slope / k_sys);
+      curve.measured_stiffness = measured_stiffness(fit.slope, input.instrument);
       // Contact radius at the window's top, interpolated as the force was.
       for (std::size_t i = 1; i < curve.depth.size() && i < curve.contact_radius.size(); ++i) {
         if (curve.depth[i] < fit.top_depth) continue;

@@ -139,12 +139,11 @@ ShellFeInverse invert_indentation(const ShellFeMeasurement& m, const Instrument&
   }
   if (!(m.diameter > m.plasmolysed_diameter)) return finish(ShellFeStatus::invalid_input, "d <= d0: no inflation");
   if (m.thickness >= 0.5 * m.plasmolysed_diameter) return finish(ShellFeStatus::invalid_input, "h >= d0/2: not a shell");
-  // Probe and tube in series, 1/k_m = 1/k + 1/k_sys, as the thin-shell inverse corrects it
-  // (mechanics/thin_shell.cpp, invert_turgor).
+  // Probe and tube in series (Eq. (M8), src/mechanics/README.md).
   if (m.stiffness >= instrument.sensor_stiffness_N_per_m) {
     return finish(ShellFeStatus::stiffness_at_sensor_limit, "measured k >= k_sys");
   }
-  const double k = m.stiffness / (1.0 - m.stiffness / instrument.sensor_stiffness_N_per_m);
+  const double k = tube_stiffness(m.stiffness, instrument);
   const double d0 = m.plasmolysed_diameter;
 
   // The closed form's E: the root's first estimate (any positive E would do; a good one saves

@@ -50,7 +50,7 @@ TurgorResult invert_turgor(double k_measured, double d, double d0,
     return result;
   }
   // Probe and tube in series: 1/k_m = 1/k + 1/k_sys (k_sys = inf leaves k = k_m).
-  const double k = k_measured / (1.0 - k_measured / k_sys);
+  const double k = tube_stiffness(k_measured, parameters);
 
   result.lambda = d / d0;
   if (!(d > d0)) {
@@ -152,7 +152,7 @@ ForwardResult thin_shell_forward(double p, double E, double h, double d0,
   result.alpha = decay_length(result.d, q);
   result.phi = arnoldi_phi(parameters.probe_radius_m / result.alpha);
   const double k = 0.75 * std::numbers::pi * p * result.d * result.phi;
-  result.k_measured = k / (1.0 + k / parameters.sensor_stiffness_N_per_m);
+  result.k_measured = measured_stiffness(k, parameters);
   if (!positive_finite(result.d) || !positive_finite(result.k_measured)) {
     result.k_measured = nan;
     result.status = SampleStatus::out_of_range;

@@ -54,6 +54,15 @@ void validate(const Instrument& instrument, std::string_view location,
 // curves whose tube sheet has no rho_um column.
 std::optional<double> given_probe_radius_m(const Instrument& instrument);
 
+// The probe's sensor and the tube in series, 1/k_measured = 1/k_tube + 1/k_sys (Eq. (M8),
+// src/mechanics/README.md); k_sys = inf leaves k unchanged. The first needs k_measured < k_sys.
+inline double tube_stiffness(double k_measured, const Instrument& instrument) noexcept {
+  return k_measured / (1.0 - k_measured / instrument.sensor_stiffness_N_per_m);
+}
+inline double measured_stiffness(double k_tube, const Instrument& instrument) noexcept {
+  return k_tube / (1.0 + k_tube / instrument.sensor_stiffness_N_per_m);
+}
+
 // One setting as written: its text (nothing when absent), where it was written (a command,
 // "file:line") and the key there ("--rho-um", "probe_radius_um").
 struct InstrumentEntry {
