@@ -10,6 +10,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "fe/mesh_quality.hpp"
 #include "growthuq/core/error.hpp"
 
 namespace growthuq::fe {
@@ -70,18 +71,22 @@ void add_octant(MeshBuilder& builder, const Vector3d& a, const Vector3d& b, cons
   }
 }
 
-// Conforming refinement by longest-edge bisection (Rivara 1984): every edge longer than the
-// size field at its midpoint is marked, each face with a marked edge also marks its longest
-// edge (so that faces are always cut through their longest edge, which bounds the angles),
-// then each face is bisected once, twice or three times. Midpoints are projected onto the
-// exact surface. Repeated until every edge fits the size field.
+// Conforming red-green refinement (Bank, Sherman and Weiser 1983): every edge longer than the
+// size field at its midpoint is marked; a face with two marked edges, or with one that is not
+// its longest, has all three marked (so a face is cut in two only through its longest edge,
+// which bounds the angles); then faces with three marked edges are cut into four similar ones
+// ("red") and faces with one into two ("green"). Red refinement keeps a regular mesh regular:
+// the new vertices have valence 6 and the old ones keep theirs, so the irregular vertices stay
+// where the refinement levels meet, away from the focus (longest-edge bisection instead leaves
+// "4-8" patches of valence 4 and 8 everywhere it refines, mesh_quality.hpp). Midpoints are
+// projected onto the exact surface. Repeated until every edge fits the size field.
 void refine(std::vector<Vector3d>& points, std::vector<std::array<int, 3>>& faces,
             const std::function<double(const Vector3d&)>& size, const Projection& project,
             int max_faces) {
   for (int pass = 0; pass < 64; ++pass) {
     std::unordered_map<long long, int> edge_index;
     std::vector<std::array<int, 2>> edges;
-    std::vector<std::array<int, 3>> face_edges(faces.size());
+    std::vector<std::array<int, 3>> face_edges(faces.size());  // edge k is opposite vertex k
     const long long stride = static_cast<long long>(points.size());
     for (std::size_t f = 0; f < faces.size(); ++f) {
       for (int k = 0; k < 3; ++k) {
@@ -114,9 +119,12 @@ void refine(std::vector<Vector3d>& points, std::vector<std::array<int, 3>>& face
       changed = false;
       for (std::size_t f = 0; f < faces.size(); ++f) {
         const auto& fe = face_edges[f];
-        if (!(marked[fe[0]] || marked[fe[1]] || marked[fe[2]])) continue;
-        const int l = fe[longest(f)];
-        if (!marked[l]) marked[l] = 1, changed = true;
+        const int count = marked[fe[0]] + marked[fe[1]] + marked[fe[2]];
+        if (count == 0 || count == 3) continue;
+        if (count == 1) continue;  // green
+        for (int k = 0; k < 3; ++k) {
+          if (!marked[fe[k]]) marked[fe[k]] = 1, changed = true;
+        }
       }
     }
     std::vector<int> midpoint(edges.size(), -1);
@@ -126,29 +134,23 @@ void refine(std::vector<Vector3d>& points, std::vector<std::array<int, 3>>& face
       points.push_back(project(0.5 * (points[edges[e][0]] + points[edges[e][1]])));
     }
     std::vector<std::array<int, 3>> refined;
-    refined.reserve(faces.size() * 2);
+    refined.reserve(faces.size() * 3);
     for (std::size_t f = 0; f < faces.size(); ++f) {
       const auto& fe = face_edges[f];
-      const int k = longest(f);
-      const int m = midpoint[fe[k]];
-      if (m < 0) {
-        refined.push_back(faces[f]);
-        continue;
-      }
-      const int v0 = faces[f][k], v1 = faces[f][(k + 1) % 3], v2 = faces[f][(k + 2) % 3];
-      const int q = midpoint[fe[(k + 2) % 3]];  // on v0-v1
-      const int r = midpoint[fe[(k + 1) % 3]];  // on v2-v0
-      if (q < 0) {
-        refined.push_back({v0, v1, m});
+      const auto& v = faces[f];
+      const std::array<int, 3> m = {midpoint[fe[0]], midpoint[fe[1]], midpoint[fe[2]]};
+      if (m[0] >= 0 && m[1] >= 0 && m[2] >= 0) {  // red: three corners and the middle
+        refined.push_back({v[0], m[2], m[1]});
+        refined.push_back({m[2], v[1], m[0]});
+        refined.push_back({m[1], m[0], v[2]});
+        refined.push_back({m[0], m[1], m[2]});
+      } else if (m[0] >= 0 || m[1] >= 0 || m[2] >= 0) {  // green: halves through the marked edge
+        const int k = m[0] >= 0 ? 0 : m[1] >= 0 ? 1 : 2;
+        const int a = v[k], b = v[(k + 1) % 3], c = v[(k + 2) % 3];
+        refined.push_back({a, b, m[k]});
+        refined.push_back({a, m[k], c});
       } else {
-        refined.push_back({q, v1, m});
-        refined.push_back({v0, q, m});
-      }
-      if (r < 0) {
-        refined.push_back({v0, m, v2});
-      } else {
-        refined.push_back({v0, m, r});
-        refined.push_back({r, m, v2});
+        refined.push_back(v);
       }
     }
     faces = std::move(refined);
@@ -168,6 +170,17 @@ std::function<double(const Vector3d&)> size_field(const MeshSizing& sizing, cons
     const double d = std::max(0.0, (p - focus).norm() - sizing.fine_radius);
     return std::min(limit, sizing.finest + sizing.grading * d);
   };
+}
+
+// How much a regular valence matters at p: most where the probe presses (within a few fine
+// radii of the focus), where a 4-8 patch would soften the bending (mesh_quality.hpp).
+std::function<double(const Vector3d&)> importance_near(const MeshSizing& sizing, const Vector3d& focus) {
+  const double reach = std::max(2 * sizing.fine_radius, 4 * sizing.finest);
+  return [focus, reach](const Vector3d& p) { return 1.0 + 20.0 * std::exp(-(p - focus).squaredNorm() / (reach * reach)); };
+}
+
+std::function<bool(const Vector3d&)> at(const Vector3d& point) {
+  return [point](const Vector3d& p) { return (p - point).norm() <= 1e-12; };
 }
 
 TriangleMesh to_mesh(const std::vector<Vector3d>& points, std::vector<std::array<int, 3>> faces) {
@@ -282,8 +295,13 @@ TriangleMesh make_tube_mesh(double length, double probe_distance, bool half_mode
       const int c1 = c + 1;
       const int a = ring_nodes[r][c], b = ring_nodes[r][c1];
       const int d = ring_nodes[r + 1][c], e = ring_nodes[r + 1][c1];
-      // Alternating diagonals, so that the coarse mesh has no preferred direction.
-      if ((r + c) % 2 == 0) {
+      // Diagonals one way on the upper quarter (x > 0), mirrored on the lower one: every vertex
+      // then has valence 6 (4 on the mirror plane y = 0, 6 in the full model), which red
+      // refinement keeps (alternating diagonals would make a 4-8 mesh, soft in bending:
+      // mesh_quality.hpp), and the mesh is symmetric about x = 0 as well as y = 0 (diagonals
+      // all one way make a helical lattice whose twist, held by the mirror plane, bends the
+      // inflated tube: 0.4 um over its 100 um, measured).
+      if (2 * c + 1 < columns - 1) {
         builder.add_face(a, b, e), builder.add_face(a, e, d);
       } else {
         builder.add_face(a, b, d), builder.add_face(b, e, d);
@@ -303,16 +321,23 @@ TriangleMesh make_tube_mesh(double length, double probe_distance, bool half_mode
     const Vector3d c(0, 0, cap_base);
     return Vector3d(c + radius * (p - c).normalized());
   };
-  refine(builder.points(), builder.faces(), size_field(sizing, focus), project, sizing.max_faces);
+  const auto size = size_field(sizing, focus);
+  refine(builder.points(), builder.faces(), size, project, sizing.max_faces);
+  improve_triangulation(builder.points(), builder.faces(), project, importance_near(sizing, focus), size, at(focus));
   TriangleMesh half = to_mesh(builder.points(), builder.faces());
   return half_model ? half : mirrored(half);
 }
 
 TriangleMesh make_sphere_mesh(bool half_model, const MeshSizing& sizing) {
   check_sizing(sizing);
-  const int n = std::max(2, static_cast<int>(std::ceil(std::numbers::pi * radius / 2 / sizing.coarsest)));
+  // The octahedron turned by 45 degrees about y, so that the pole +x where the probe presses is
+  // the middle of an octahedron edge (in the plane y = 0), a vertex of valence 6 when n is
+  // even, not one of the octahedron's valence-4 corners.
+  int n = std::max(2, static_cast<int>(std::ceil(std::numbers::pi * radius / 2 / sizing.coarsest)));
+  n += n % 2;
   MeshBuilder builder;
-  const Vector3d o(0, 0, 0), ex(1, 0, 0), ey(0, 1, 0), ez(0, 0, 1);
+  const double r = std::numbers::sqrt2 / 2;
+  const Vector3d o(0, 0, 0), ex(r, 0, -r), ey(0, 1, 0), ez(r, 0, r);
   for (double sz : {1.0, -1.0}) {
     for (double sx : {1.0, -1.0}) {
       // Octant (sx ex, ey, sz ez), ordered counter-clockwise seen from outside.
@@ -322,8 +347,10 @@ TriangleMesh make_sphere_mesh(bool half_model, const MeshSizing& sizing) {
     }
   }
   auto project = [](const Vector3d& p) { return Vector3d(radius * p.normalized()); };
-  refine(builder.points(), builder.faces(), size_field(sizing, Vector3d(radius, 0, 0)), project,
-         sizing.max_faces);
+  const Vector3d pole(radius, 0, 0);
+  const auto size = size_field(sizing, pole);
+  refine(builder.points(), builder.faces(), size, project, sizing.max_faces);
+  improve_triangulation(builder.points(), builder.faces(), project, importance_near(sizing, pole), size, at(pole));
   TriangleMesh half = to_mesh(builder.points(), builder.faces());
   return half_model ? half : mirrored(half);
 }

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "fe/mesh.hpp"
+#include "fe/mesh_quality.hpp"
 #include "fe/pressure.hpp"
 #include "growthuq/core/error.hpp"
 
@@ -81,7 +82,8 @@ TEST_CASE("half tube mesh: nodes on the capped tube, open only on y = 0 and z = 
   }
   CHECK(longest_near <= sizing.finest * (1 + 1e-9));
   CHECK(shortest_far > 2 * sizing.finest);
-  // Longest-edge bisection of a near-equilateral mesh keeps angles bounded away from 0.
+  // Red-green refinement (green cuts through any edge, then flips and smoothing) keeps angles
+  // bounded away from 0.
   CHECK(min_angle_degrees(mesh) > 20.0);
   // The apex is a node of a few triangles (the octant patch, perhaps bisected), not a fan.
   int apex_faces = 0;
@@ -145,4 +147,37 @@ TEST_CASE("mesh sizing: each level sqrt(2) finer, the finest size below probe ra
   CHECK(s.finest / f.finest == doctest::Approx(std::sqrt(2.0)));
   CHECK(c.finest <= 0.5 * 0.05);
   CHECK(c.fine_radius >= std::sqrt(0.01));
+}
+
+// Where the probe presses, every vertex has valence 6 (counted in the full model on the mirror
+// plane): on a "4-8" patch of valence 4 and 8 the bending element has a checkerboard mode and
+// the probe's stiffness comes out 13-24 % soft (mesh_quality.hpp; test_fe_vella measures it).
+TEST_CASE("the tube and sphere meshes are regular (valence 6) where the probe presses, at every level") {
+  for (MeshLevel level : {MeshLevel::coarse, MeshLevel::standard, MeshLevel::fine}) {
+    for (double rho : {0.02, 0.05, 0.2}) {
+      CAPTURE(rho);
+      const MeshSizing sizing = mesh_sizing(level, rho, 0.03);
+      const Eigen::Vector3d focus(0.5, 0, 19.0 - 1.87);
+      const TriangleMesh tube = make_tube_mesh(19.0, 1.87, true, sizing);
+      std::vector<Eigen::Vector3d> points(static_cast<std::size_t>(tube.positions.cols()));
+      for (std::size_t v = 0; v < points.size(); ++v) points[v] = tube.positions.col(static_cast<Eigen::Index>(v));
+      const ValenceCounts near = valence_counts(points, tube.faces, [&](const Eigen::Vector3d& p) {
+        return (p - focus).norm() <= sizing.fine_radius;
+      });
+      CHECK(near.interior > 20);
+      CHECK(near.irregular == 0);
+      const ValenceCounts all = valence_counts(points, tube.faces);
+      CHECK(all.irregular <= all.interior / 10);  // where the levels meet, and the apex
+
+      const TriangleMesh sphere = make_sphere_mesh(true, sizing);
+      points.resize(static_cast<std::size_t>(sphere.positions.cols()));
+      for (std::size_t v = 0; v < points.size(); ++v) points[v] = sphere.positions.col(static_cast<Eigen::Index>(v));
+      const ValenceCounts pole = valence_counts(points, sphere.faces, [&](const Eigen::Vector3d& p) {
+        // (the octahedron's corners, of valence 4, lie 0.38 from the pole)
+        return (p - Eigen::Vector3d(0.5, 0, 0)).norm() <= std::min(sizing.fine_radius, 0.3);
+      });
+      CHECK(pole.interior > 20);
+      CHECK(pole.irregular == 0);
+    }
+  }
 }
