@@ -263,6 +263,29 @@ EnergyParts ShellAssembly::evaluate_impl(const Eigen::Matrix3Xd& x, Eigen::Vecto
   return parts;
 }
 
+int ShellAssembly::limit_penetration(Eigen::Matrix3Xd& x, double cap) const {
+  const ShellLoads& loads = problem_.loads;
+  int moved = 0;
+  for (Eigen::Index v = 0; v < x.cols(); ++v) {
+    Eigen::Vector3d p = x.col(v);
+    for (const RigidSphere& sphere : loads.spheres) {
+      const Eigen::Vector3d r = p - sphere.centre;
+      const double distance = r.norm();
+      if (distance > 0 && sphere.radius - distance > cap) p = sphere.centre + r * ((sphere.radius - cap) / distance);
+    }
+    for (const RigidPlane& plane : loads.planes) {
+      const double penetration = -plane.normal.dot(p - plane.point);
+      if (penetration > cap) p += (penetration - cap) * plane.normal;
+    }
+    if (p == x.col(v)) continue;
+    ++moved;
+    for (int k = 0; k < 3; ++k) {
+      if (!is_fixed(3 * v + k)) x(k, v) = p[k];
+    }
+  }
+  return moved;
+}
+
 ContactState ShellAssembly::contact_state(const Eigen::Matrix3Xd& x) const {
   const ShellLoads& loads = problem_.loads;
   ContactState state;

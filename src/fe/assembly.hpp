@@ -78,6 +78,10 @@ class ShellAssembly {
   const Eigen::SparseMatrix<double>& pattern() const { return pattern_; }
 
   ContactState contact_state(const Eigen::Matrix3Xd& x) const;
+  // Moves every node that penetrates an obstacle by more than `cap` back to a penetration of
+  // `cap` (radially for a sphere, along the normal for a plane), its fixed dofs untouched; returns
+  // how many nodes moved. Newton's line search uses it (newton.hpp).
+  int limit_penetration(Eigen::Matrix3Xd& x, double cap) const;
   // A typical nodal force of the wall, E h0 times the shortest edge: the gradient's scale.
   double force_scale() const { return force_scale_; }
   double shortest_edge() const { return shortest_edge_; }

@@ -347,6 +347,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   // A Newton step may not carry a node across the probe: the line search sees only the energy
   // at the step's end, where a wall that has jumped past the probe has none left in contact.
   indentation.newton.max_step = 0.25 * rho;
+  indentation.newton.penetration_floor = 0.5 * tolerance;
   // The nodal residual that is left, 1e-6 of E h0 times the shortest edge, is below 1e-5 of the
   // smallest recorded force; the contact's active set makes the last digits linear to reach.
   indentation.newton.gradient_tolerance = 1e-6;

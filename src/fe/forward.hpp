@@ -33,6 +33,11 @@ struct ForwardProblem {            // all dimensionless
   MeshLevel mesh = MeshLevel::standard;
 };
 
+// The deepest indentation (/ d0) that indent() and the inverse ask for when they choose the depth
+// themselves: beyond about half the diameter, probe and substrate squeeze the tube flat, and
+// simulate_forward refuses depths of d0 / 2 or more.
+inline constexpr double deepest_automatic_depth = 0.45;
+
 struct ForwardResult {
   FeStatus status = FeStatus::ok;
   std::string message;             // why, when status != ok

@@ -36,14 +36,13 @@ void validate_input(const IndentationInput& input, std::string_view location) {
 
 // Deep enough for the window's top: 1.5 times the depth at which the closed-form stiffness
 // reaches it (the finite-element curve stiffens or softens by less than that over the
-// envelope), at least 5 % and at most 60 % of d0 (beyond, probe and substrate squeeze the tube
-// flat).
+// envelope), at least 5 % of d0 and at most fe::deepest_automatic_depth.
 double automatic_depth(const IndentationInput& input, const ShellFeOptions& options) {
   const double d0 = input.plasmolysed_diameter;
   const auto closed = thin_shell_forward(input.pressure, input.young, input.thickness, d0, input.instrument);
   double depth = 0.2 * d0;
   if (closed.status == SampleStatus::ok && closed.k_measured > 0) depth = 1.5 * options.force_window[1] / closed.k_measured;
-  return std::clamp(depth, 0.05 * d0, 0.6 * d0);
+  return std::clamp(depth, 0.05 * d0, fe::deepest_automatic_depth * d0);
 }
 
 }  // namespace
@@ -120,14 +119,14 @@ IndentationCurve indent(const IndentationInput& input, const ShellFeOptions& opt
       break;
     }
     if (curve.status != ShellFeStatus::ok) break;  // the solver's own failure, before the window's top
-    if (!automatic || attempt == 2 || depth >= 0.6 * d0) {
+    if (!automatic || attempt == 2 || depth >= fe::deepest_automatic_depth * d0) {
       curve.status = ShellFeStatus::window_not_reached;
       curve.message = "the force reached " + format_double(fit.max_force * 1e6) + " uN at " +
                       format_double(curve.depth.empty() ? 0.0 : curve.depth.back() * 1e6) + " um, below the window's top " +
                       format_double(high * 1e6) + " uN" + (automatic ? "" : " (a larger --depth-um reaches it)");
       break;
     }
-    depth = std::min(2.0 * depth, 0.6 * d0);
+    depth = std::min(2.0 * depth, fe::deepest_automatic_depth * d0);
   }
   curve.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return curve;

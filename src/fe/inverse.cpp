@@ -166,7 +166,7 @@ ShellFeInverse invert_indentation(const ShellFeMeasurement& m, const Instrument&
   const double low = options.force_window[0], high = options.force_window[1];
   // Deep enough that the window's top is on the curve at the root: 1.5 times the depth at
   // which k reaches it, within 5-60 % of d0; deepened twice if short.
-  double depth = std::clamp(1.5 * high / (k * d0), 0.05, 0.6);
+  double depth = std::clamp(1.5 * high / (k * d0), 0.05, fe::deepest_automatic_depth);
   for (int attempt = 0;; ++attempt) {
     problem.max_depth = depth;
     const fe::ForwardResult result = fe::simulate_forward(problem);
@@ -187,11 +187,11 @@ ShellFeInverse invert_indentation(const ShellFeMeasurement& m, const Instrument&
     if (match.status != fe::ModulusMatchStatus::curve_too_short) {
       return finish(ShellFeStatus::no_modulus_root, "no E gives k = " + format_double(k) + " N/m over the window");
     }
-    if (attempt == 2 || depth >= 0.6) {
+    if (attempt == 2 || depth >= fe::deepest_automatic_depth) {
       return finish(ShellFeStatus::window_not_reached, "the curve to " + format_double(depth) +
                                                            " d0 is too short for the window at the E that k needs");
     }
-    depth = std::min(2.0 * depth, 0.6);
+    depth = std::min(2.0 * depth, fe::deepest_automatic_depth);
   }
 }
 

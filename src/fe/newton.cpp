@@ -102,8 +102,12 @@ NewtonReport NewtonSolver::minimise(Eigen::Matrix3Xd& x, const NewtonOptions& op
     double alpha = 1.0;
     bool accepted = false;
     start = Clock::now();
+    const double cap = options.penetration_floor > 0
+                           ? std::max(options.penetration_floor, 1.5 * assembly_.contact_state(x).max_penetration)
+                           : 0.0;
     for (int k = 0; k < options.max_line_search; ++k) {
       trial = x + alpha * Eigen::Map<const Eigen::Matrix3Xd>(step.data(), 3, x.cols());
+      if (cap > 0) assembly_.limit_penetration(trial, cap);
       const double energy = assembly_.energy(trial).total();
       if (std::isfinite(energy) && (energy <= report.energy + 1e-4 * alpha * slope ||
                                     std::fabs(energy - report.energy) <= noise)) {

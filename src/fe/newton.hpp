@@ -20,6 +20,15 @@ struct NewtonOptions {
   double max_step = 0.25;            // largest nodal move of one iteration, / d0
   int max_line_search = 40;
   int max_shifts = 30;
+  // Contact-aware line search (0: off). Newton's model does not see an obstacle that a node has
+  // not touched yet, so its step can carry the node deep inside, and a plain backtracking line
+  // search then cuts the whole step to almost nothing (the indentation's iterations were spent
+  // so, at 1e-3 of a step each). With a floor > 0, every trial point has its nodes moved back
+  // out of the obstacles to a penetration of at most max(floor, 1.5 times the deepest
+  // penetration of the current iterate) (a projection onto that set, ShellAssembly::
+  // limit_penetration) before its energy is compared; at a converged state with penetrations
+  // below the floor the projection does nothing, so the minimiser is unchanged.
+  double penetration_floor = 0.0;
 };
 
 enum class NewtonStatus { converged, max_iterations, line_search_failed, factorisation_failed, not_finite };

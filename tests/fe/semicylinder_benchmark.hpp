@@ -83,7 +83,11 @@ inline SemicylinderMesh make_semicylinder_mesh(int hoop_segments, int axial_segm
   for (int r = 0; r + 1 < rings; ++r) {
     for (int c = 0; c < hoop_segments; ++c) {
       const int a = index(r, c), b = index(r, c + 1), e = index(r + 1, c + 1), d = index(r + 1, c);
-      if (!alternating || (r + c) % 2 == 0) {
+      // Uniform: one diagonal on the half c < hoop_segments / 2, mirrored on the other half, so
+      // that the mesh is symmetric about the crown's plane x = 0 as the problem is (diagonals all
+      // one way make a lattice without that symmetry, whose path leaves the symmetric branch).
+      const bool first_half = 2 * c < hoop_segments;
+      if (alternating ? (r + c) % 2 == 0 : first_half) {
         out.mesh.faces.push_back({a, b, e});
         out.mesh.faces.push_back({a, e, d});
       } else {

@@ -12,12 +12,14 @@ using namespace growthuq;
 
 namespace {
 
-// Arabidopsis-like: d0 = 5.35 um, turgid h = 200 nm, p = 0.3 MPa, E = 30 MPa (p/E = 0.01,
-// d/d0 about 1.2), rho = 0.25 um.
+// Arabidopsis-like: d0 = 5.35 um, turgid h = 200 nm, p = 0.45 MPa, E = 45 MPa (p/E = 0.01,
+// d/d0 about 1.18), rho = 0.25 um: k about 1.9 N/m, so the curve reaches the window's top
+// (4 uN) near 2.1 um, inside the deepest automatic depth (0.45 d0 = 2.4 um). (At p = 0.3 MPa,
+// E = 30 MPa the forces are 2/3 of these and the top lies beyond 0.45 d0.)
 IndentationInput arabidopsis_like() {
   IndentationInput input;
-  input.pressure = 0.3e6;
-  input.young = 30e6;
+  input.pressure = 0.45e6;
+  input.young = 45e6;
   input.thickness = 200e-9;
   input.plasmolysed_diameter = 5.35e-6;
   input.instrument.probe_radius_m = 0.25e-6;

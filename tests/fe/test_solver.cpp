@@ -173,3 +173,34 @@ TEST_CASE("forward protocol: rising force, penetration within 1e-3 rho, statuses
   CHECK(b.status == FeStatus::burst);
   CHECK(!b.message.empty());
 }
+
+// The line search's projection (newton.hpp, penetration_floor): nodes deeper than the cap in the
+// probe or the substrate come back to exactly the cap, along the sphere's radius or the plane's
+// normal; nodes within it, and fixed dofs, stay where they are.
+TEST_CASE("limit_penetration puts nodes deeper than the cap back at the cap, fixed dofs untouched") {
+  ShellProblem problem;
+  problem.mesh.positions.resize(3, 4);  // a unit square: the reference only has to be valid
+  problem.mesh.positions << 0, 1, 1, 0, 0, 0, 1, 1, 0, 0, 0, 0;
+  problem.mesh.faces = {{0, 1, 2}, {0, 2, 3}};
+  problem.bending = false;
+  problem.fixed.assign(12, 0);
+  problem.fixed[3 * 2 + 1] = 1;  // node 2 held in y
+  problem.loads.spheres = {RigidSphere{Eigen::Vector3d(0, 0, 1), 0.5}};
+  problem.loads.planes = {RigidPlane{Eigen::Vector3d(0, 0, -1), Eigen::Vector3d::UnitZ()}};
+  const ShellAssembly assembly(problem);
+  Eigen::Matrix3Xd x(3, 4);
+  x.col(0) = Eigen::Vector3d(0.0, 0.0, 0.7);     // 0.3 inside the sphere
+  x.col(1) = Eigen::Vector3d(0.1, 0.0, 0.5005);  // inside the sphere by less than the cap
+  x.col(2) = Eigen::Vector3d(0.3, 0.2, 0.9);     // inside the sphere, y held
+  x.col(3) = Eigen::Vector3d(2.0, 0.0, -1.4);    // 0.4 below the plane
+  const Eigen::Matrix3Xd before = x;
+  const double cap = 0.01;
+  CHECK(assembly.limit_penetration(x, cap) == 3);
+  CHECK((x.col(0) - Eigen::Vector3d(0, 0, 1)).norm() == doctest::Approx(0.5 - cap).epsilon(1e-14));
+  CHECK(x(0, 0) == 0.0);
+  CHECK(x.col(1) == before.col(1));
+  CHECK(x(1, 2) == before(1, 2));  // the fixed dof
+  CHECK(x(0, 2) != before(0, 2));
+  CHECK(x(2, 3) == doctest::Approx(-1.0 - cap).epsilon(1e-14));
+  CHECK(x(0, 3) == before(0, 3));
+}
