@@ -100,7 +100,7 @@ int run_indent(const Arguments& arguments) {
                        "Prints name = value lines: k_N_per_m (the tube; k_measured_N_per_m in series with --k-sys),\n"
                        "d_um (turgid diameter far from tip and end; the sphere's for --geometry sphere), axial_stretch,\n"
                        "thickness_stretch, h0_nm, contact_radius_um (at the window's top), newton_iterations, seconds,\n"
-                       "seconds_assembly, seconds_factorisation, seconds_contact, status (ok or why not: the\n"
+                       "seconds_assembly, seconds_factorisation, factorisations, seconds_contact, status (ok or why not: the\n"
                        "exit status is 0 whenever the simulation ran; k is printed only for status ok).",
                        described, {}, values)) {
     return 0;
@@ -144,6 +144,7 @@ int run_indent(const Arguments& arguments) {
   print("seconds", curve.seconds);
   print("seconds_assembly", curve.seconds_assembly);
   print("seconds_factorisation", curve.seconds_factorisation);
+  print("factorisations", static_cast<double>(curve.factorisations));
   print("seconds_contact", curve.seconds_contact);
   print("status", std::string(to_string(curve.status)));
   if (!curve.message.empty()) print("message", curve.message);

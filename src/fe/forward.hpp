@@ -50,6 +50,7 @@ struct ForwardResult {
   double max_penetration = 0.0;    // deepest node in the probe or substrate over the path, / d0
   int newton_iterations = 0;
   double seconds_assembly = 0, seconds_factorisation = 0, seconds_contact = 0;
+  int factorisations = 0;          // sparse Cholesky factorisations (shifted retries included)
   // Final state for field output: mesh, deformed positions, per-face stresses.
   TriangleMesh mesh;
   Eigen::Matrix3Xd deformed;
@@ -60,7 +61,8 @@ struct ForwardResult {
 // state, safe to call concurrently from several threads or processes. Never throws for a
 // numerical failure (status instead); throws InputError only for an unreadable mesh file.
 //
-// Supports. tube: the ring z = 0 pinned; half model: y = 0 nodes keep y = 0. The substrate,
+// Supports. tube: the ring z = 0 pinned; the nodes of the plane y = 0 keep y = 0 (half model: the
+// mirror plane; full model: on the symmetric branch, see forward.cpp). The substrate,
 // if on, is the plane x = min x of the inflated wall. sphere: the probe presses at the pole +x;
 // the great circle x = 0 is held in x (the symmetry plane of a sphere squeezed between two
 // equal probes, so the depth is the pole's own deflection), rotations and the z translation are

@@ -87,6 +87,7 @@ void curve_in_si(const ForwardResult& result, double d0, double young, Indentati
   curve.newton_iterations += result.newton_iterations;
   curve.seconds_assembly += result.seconds_assembly;
   curve.seconds_factorisation += result.seconds_factorisation;
+  curve.factorisations += result.factorisations;
   curve.seconds_contact += result.seconds_contact;
 }
 

@@ -8,7 +8,6 @@
 # figures are also in each test's comments):
 #   test_fe_benchmarks   Sze semi-cylinder: within 3 % up to 0.70 Pmax, then a jump to a deeper
 #                        branch, +22 % at the final load (need 2 %)
-#   test_fe_half_vs_full the full tube model ends not_converged on the coarse mesh
 #   test_fe_convergence  not yet run to completion (its runtime is unknown)
 # Run one anyway with `build/release/tests/fe/<binary>` (see the COMMAND of each).
 growthuq_add_test(test_fe_references test_fe_vella_reference.cpp test_fe_validation_support.cpp)
@@ -34,8 +33,11 @@ growthuq_configure_target(test_fe_balance)
 add_test(NAME test_fe_balance COMMAND test_fe_balance "--test-case-exclude=*half model*")
 set_tests_properties(test_fe_balance PROPERTIES LABELS fe_validation)
 growthuq_test_timeout(test_fe_balance 900)
+# Half and full model within 0.2 % (measured 2026-12-02, coarse mesh; the full model is held on
+# its symmetric branch, forward.cpp).
 add_test(NAME test_fe_half_vs_full COMMAND test_fe_balance "--test-case=*half model*")
-set_tests_properties(test_fe_half_vs_full PROPERTIES LABELS fe_validation DISABLED TRUE)
+set_tests_properties(test_fe_half_vs_full PROPERTIES LABELS fe_validation)
+growthuq_test_timeout(test_fe_half_vs_full 900)
 
 growthuq_add_test(test_fe_convergence test_fe_convergence.cpp)
 set_tests_properties(test_fe_convergence PROPERTIES LABELS fe_validation DISABLED TRUE)

@@ -115,6 +115,7 @@ struct IndentationCurve {
   int newton_iterations = 0;
   double seconds = 0.0;                  // wall time of the whole call
   double seconds_assembly = 0.0, seconds_factorisation = 0.0, seconds_contact = 0.0;
+  int factorisations = 0;                // sparse Cholesky factorisations, shifted retries included
   ShellFeField field;                    // empty unless asked for
 };
 
