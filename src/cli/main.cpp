@@ -23,7 +23,7 @@ constexpr std::array commands{
     Command{"tradeoff", "measured speed/accuracy trade of a campaign over sample counts", growthuq::cli::run_tradeoff},
     Command{"synth", "draw a SYNTHETIC raw data set (tables, curves) from true line distributions", growthuq::cli::run_synth},
     Command{"fit-line", "fit a plant line's distributions from its raw data (raw.ini) to a line file", growthuq::cli::run_fit_line},
-    Command{"indent", "finite-element tube under the probe: force curve, k, d (in development, not validated)", growthuq::cli::run_indent},
+    Command{"indent", "finite-element tube under the probe: force curve, k, d (minutes per curve)", growthuq::cli::run_indent},
 };
 
 void print_usage(std::ostream& out) {

@@ -9,6 +9,7 @@
 
 #include "fe/force_window.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/core/units.hpp"
 #include "growthuq/fe/indentation.hpp"
 #include "growthuq/io/csv.hpp"
 #include "support/cli_run.hpp"
@@ -52,18 +53,24 @@ TEST_CASE("indent: the curve and the name = value lines, as the library computes
   for (const char* name : {"k_N_per_m", "d_um", "newton_iterations", "seconds"}) CHECK(values.count(name) == 1);
 
   // The library at the same input gives the same k and diameter (the CLI only converts units).
+  // Not to the last bit: the CLI's conversions (0.45 * 1e6, L = 100 * 1e-6, ...) differ from
+  // the library's defaults in the last bit, and such a change moves k by about 1e-4 (measured:
+  // 6e-5), because the mesh and the load path make discrete choices (ring positions, step cuts,
+  // penalty raises) that move with it; d, from the inflation alone (solved to 1e-8 of the force
+  // scale), by about 1e-8. 1e-3 and 1e-6 still catch any wrong unit or option.
   IndentationInput input;
-  input.pressure = 0.45e6;
-  input.young = 45e6;
-  input.thickness = 200e-9;
-  input.plasmolysed_diameter = 5.35e-6;
-  input.instrument.probe_radius_m = 0.25e-6;
+  input.pressure = 0.45 * 1e6;
+  input.young = 45 * 1e6;
+  input.thickness = 200 * 1e-9;
+  input.plasmolysed_diameter = 5.35 * 1e-6;
+  input.instrument.probe_radius_m = from_um(0.25);
   ShellFeOptions options;
   options.mesh = ShellFeMesh::coarse;
   const IndentationCurve curve = indent(input, options);
   REQUIRE(curve.status == ShellFeStatus::ok);
-  CHECK(parse_double(values["k_N_per_m"], "test", "k") == doctest::Approx(curve.stiffness).epsilon(1e-12));
-  CHECK(parse_double(values["d_um"], "test", "d") == doctest::Approx(curve.turgid_diameter * 1e6).epsilon(1e-12));
+  const double k = parse_double(values["k_N_per_m"], "test", "k");
+  CHECK(k == doctest::Approx(curve.stiffness).epsilon(1e-3));
+  CHECK(parse_double(values["d_um"], "test", "d") == doctest::Approx(curve.turgid_diameter * 1e6).epsilon(1e-6));
 
   // The CSV's curve gives that k through the window fit (0.4-4 uN).
   const CsvTable table = read_csv((scratch.root / "curve.csv").string());
@@ -72,7 +79,7 @@ TEST_CASE("indent: the curve and the name = value lines, as the library computes
   const std::vector<double> delta = table.numeric_column("delta_um"), force = table.numeric_column("F_uN");
   const fe::WindowFit fit = fe::fit_force_window(delta, force, 0.4, 4.0);
   REQUIRE(fit.status == fe::WindowFitStatus::ok);
-  CHECK(fit.slope == doctest::Approx(curve.stiffness).epsilon(1e-12));  // uN/um = N/m
+  CHECK(fit.slope == doctest::Approx(k).epsilon(1e-12));  // uN/um = N/m, the CLI's own k
   CHECK(fs::exists(scratch.root / "wall.xdmf"));
   CHECK(fs::exists(scratch.root / "wall.h5"));
 
