@@ -63,6 +63,11 @@ bool prepare_output_directory(const Campaign& campaign, Overwrite overwrite) {
       throw InputError(directory, "output directory already exists; choose another (--out DIR) or pass --force to replace its results");
     }
     if (!fs::is_directory(directory, error)) throw InputError(directory, "exists and is not a directory");
+    // Every file a run writes or removes there is a regular file or absent, so neither the
+    // writers nor the removals below touch a device, FIFO or folder of that name.
+    for (const char* name : {samples_csv_name, summary_csv_name, results_h5_name, data_uncertainty_csv_name}) {
+      check_can_write(in_directory(directory, name), Overwrite::allow);
+    }
     if (!campaign.formats.csv) fs::remove(in_directory(directory, samples_csv_name), error);
     if (!campaign.formats.hdf5) fs::remove(in_directory(directory, results_h5_name), error);
     return false;

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <numeric>
 #include <span>
 #include <stdexcept>
@@ -170,6 +169,7 @@ ResultsH5Writer::ResultsH5Writer(std::string path, Overwrite overwrite)
   // Errors reach the user as one InputError line, not as HDF5's stack dump on stderr.
   H5::Exception::dontPrint();
   const std::string partial = path_ + ".partial";
+  prepare_partial_file(partial);
   try {
     file_ = std::make_unique<File>(File{partial, H5::H5File(partial, H5F_ACC_TRUNC)});
     create_untimed_group(file_->file, "lines");
@@ -256,13 +256,13 @@ void ResultsH5Writer::finish(const CampaignMetadata& metadata) {
     rethrow_hdf5(partial, error);
   }
   file_.reset();
-  check_can_write(path_, overwrite_);  // a file that appeared meanwhile is not replaced silently
-  std::error_code error;
-  std::filesystem::rename(partial, path_, error);
-  if (error) {
+  try {
+    check_can_write(path_, overwrite_);  // a file that appeared meanwhile is not replaced silently
+  } catch (const InputError&) {
     std::remove(partial.c_str());
-    throw InputError(path_, "cannot move the finished file into place: " + error.message());
+    throw;
   }
+  move_into_place(partial, path_);
 }
 
 ResultsH5Writer::~ResultsH5Writer() {
