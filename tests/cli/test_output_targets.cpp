@@ -1,6 +1,7 @@
 // Where results go, for every command that writes them: an output path that is a device node
 // (or a FIFO, when this process may not make devices) is refused with one line naming it and
-// what was expected, even with --force, and is left as it was.
+// what was expected, even with --force, and is left as it was; and a result printed on a
+// stdout that cannot take it (a full device) makes the command fail instead of exiting 0.
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -56,6 +57,14 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text;
 }
 
+// `growthuq <arguments>` in `directory` with stdout to `stdout_path` (stderr to stderr.txt).
+CliOutcome run_with_stdout(const std::string& arguments, const fs::path& directory, const fs::path& stdout_path) {
+  const std::string command = "cd '" + directory.string() + "' && '" + std::string(GROWTHUQ_CLI) + "' " + arguments +
+                              " >'" + stdout_path.string() + "' 2>stderr.txt";
+  const int status = std::system(command.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, "", slurp(directory / "stderr.txt")};
+}
+
 }  // namespace
 
 TEST_CASE("--force never replaces a device: every command that writes files refuses it and leaves it") {
@@ -93,4 +102,30 @@ TEST_CASE("--force never replaces a device: every command that writes files refu
     CHECK(is_special_file(target, kind));
     CHECK(partial_files(scratch.root) == std::vector<std::string>{});
   }
+}
+
+TEST_CASE("a result printed on a full stdout is an error, not exit status 0") {
+  const ScratchDirectory scratch("cli_full");
+  write_inputs(scratch.root);
+  const fs::path full = scratch.root / "full";
+  if (!make_special_file(full, SpecialKind::full_device)) {
+    MESSAGE("not root: no full device can be made here, so a full stdout is not checked");
+    return;
+  }
+  for (const std::string command : {"eval --rho-um 0.5 --k 2.87 --d-um 6.56 --d0-um 5.35 --h-nm 145",
+                                    "fit k.csv --column k_N_per_m", "sample --line line.ini --samples 10 --seed 1 --out d.csv",
+                                    "--version"}) {
+    CAPTURE(command);
+    const CliOutcome run = run_with_stdout(command, scratch.root, full);
+    CHECK(run.exit_code == 2);
+    CHECK(run.err.find(": error: standard output: write failed: No space left on device (what was printed there is "
+                       "incomplete)\n") != std::string::npos);
+  }
+  // The same commands on a stdout that takes everything succeed.
+  const fs::path null = scratch.root / "null";
+  REQUIRE(make_special_file(null, SpecialKind::null_device));
+  fs::remove(scratch.root / "d.csv");
+  const CliOutcome run = run_with_stdout("sample --line line.ini --samples 10 --seed 1 --out d.csv", scratch.root, null);
+  CHECK(run.exit_code == 0);
+  CHECK(run.err.empty());
 }
