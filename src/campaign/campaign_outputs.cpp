@@ -24,6 +24,7 @@
 #include "growthuq/core/units.hpp"
 #include "growthuq/io/results_h5.hpp"
 #include "growthuq/stats/line_analysis.hpp"
+#include "growthuq/stats/quantity_summary.hpp"
 
 namespace growthuq {
 namespace {
@@ -139,6 +140,9 @@ class OutputObserver final : public RunObserver {
   }
 
   void line_analyzed(LineResult&& result, LineStatistics&& statistics, const std::vector<std::string>& warnings) override {
+    // Before anything of the line is written: a statistic that overflowed would reach
+    // results.h5 as inf and summary.csv as an empty cell, which reads as "undefined".
+    for (const QuantitySummary& summary : statistics.summaries) require_finite_statistics(summary, campaign_.campaign().path);
     progress_.line_finished();
     for (const std::string& warning : warnings) log_ << "growthuq run: line '" << result.name << "': " << warning << "\n";
     summaries_.insert(summaries_.end(), statistics.summaries.begin(), statistics.summaries.end());
