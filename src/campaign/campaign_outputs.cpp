@@ -24,6 +24,7 @@
 #include "growthuq/core/units.hpp"
 #include "growthuq/io/results_h5.hpp"
 #include "growthuq/stats/line_analysis.hpp"
+#include "growthuq/stats/quantity_summary.hpp"
 
 namespace growthuq {
 namespace {
@@ -63,6 +64,11 @@ bool prepare_output_directory(const Campaign& campaign, Overwrite overwrite) {
       throw InputError(directory, "output directory already exists; choose another (--out DIR) or pass --force to replace its results");
     }
     if (!fs::is_directory(directory, error)) throw InputError(directory, "exists and is not a directory");
+    // Every file a run writes or removes there is a regular file or absent, so neither the
+    // writers nor the removals below touch a device, FIFO or folder of that name.
+    for (const char* name : {samples_csv_name, summary_csv_name, results_h5_name, data_uncertainty_csv_name}) {
+      check_can_write(in_directory(directory, name), Overwrite::allow);
+    }
     if (!campaign.formats.csv) fs::remove(in_directory(directory, samples_csv_name), error);
     if (!campaign.formats.hdf5) fs::remove(in_directory(directory, results_h5_name), error);
     return false;
@@ -134,6 +140,9 @@ class OutputObserver final : public RunObserver {
   }
 
   void line_analyzed(LineResult&& result, LineStatistics&& statistics, const std::vector<std::string>& warnings) override {
+    // Before anything of the line is written: a statistic that overflowed would reach
+    // results.h5 as inf and summary.csv as an empty cell, which reads as "undefined".
+    for (const QuantitySummary& summary : statistics.summaries) require_finite_statistics(summary, campaign_.campaign().path);
     progress_.line_finished();
     for (const std::string& warning : warnings) log_ << "growthuq run: line '" << result.name << "': " << warning << "\n";
     summaries_.insert(summaries_.end(), statistics.summaries.begin(), statistics.summaries.end());

@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <span>
 #include <stdexcept>
 
 #include "campaign/campaign_models.hpp"
@@ -20,6 +21,7 @@
 #include "growthuq/core/units.hpp"
 #include "growthuq/growth/kappa.hpp"
 #include "growthuq/mechanics/mechanical_correlation.hpp"
+#include "growthuq/mechanics/thin_shell_evaluators.hpp"
 #include "growthuq/sampling/random_stream.hpp"
 #include "growthuq/stats/quantity_summary.hpp"
 #include "growthuq/stats/rank_correlation.hpp"
@@ -165,6 +167,17 @@ std::vector<double> PreparedCampaign::evaluate_chunk(const PreparedLine& line, c
     std::span<double> column = block.add_column(variables[j].name);
     const double to_si = variables[j].unit->to_si;
     for (std::size_t i = 0; i < n; ++i) column[i] = design.values[j][range.begin + i] * to_si;
+  }
+  // The stretch from d and d0 as drawn, in the line file's units, before the conversion above
+  // rounds them (thin_shell.hpp, TubeDiameters).
+  const LineVariable* d = line.design_variables.find("d");
+  const LineVariable* d0 = line.design_variables.find("d0");
+  if (d != nullptr && d0 != nullptr) {
+    const auto drawn = [&](const LineVariable* variable) {
+      const auto j = static_cast<std::size_t>(variable - variables.data());
+      return std::span<const double>(design.values[j].data() + range.begin, n);
+    };
+    add_hoop_strain(block, drawn(d), d->unit->to_si, drawn(d0), d0->unit->to_si);
   }
   run_plan(line.plan, block);
   return ChunkValues::pack(block, computed_outputs_);

@@ -100,8 +100,12 @@ int evaluate_point(const EvalOptions& options, const Instrument& parameters) {
   const bool has_h = !options.h_nm.empty();
   SampleBlock block(1);
   block.set_column("k", std::vector<double>{positive_flag(options.k, "--k", "a positive stiffness in N/m")});
-  block.set_column("d", std::vector<double>{from_um(positive_flag(options.d_um, "--d-um", "a positive diameter in um"))});
-  block.set_column("d0", std::vector<double>{from_um(positive_flag(options.d0_um, "--d0-um", "a positive diameter in um"))});
+  const double d_um = positive_flag(options.d_um, "--d-um", "a positive diameter in um");
+  const double d0_um = positive_flag(options.d0_um, "--d0-um", "a positive diameter in um");
+  block.set_column("d", std::vector<double>{from_um(d_um)});
+  block.set_column("d0", std::vector<double>{from_um(d0_um)});
+  // The stretch in um, as given (thin_shell.hpp, TubeDiameters).
+  add_hoop_strain(block, std::vector<double>{d_um}, unit_factor::um, std::vector<double>{d0_um}, unit_factor::um);
   if (has_h) {
     block.set_column("h", std::vector<double>{from_nm(positive_flag(options.h_nm, "--h-nm", "a positive thickness in nm"))});
   }
@@ -130,11 +134,22 @@ int evaluate_point(const EvalOptions& options, const Instrument& parameters) {
   return 0;
 }
 
+// A column of measurements as the file gives them, in `unit`.
+struct MeasuredColumn {
+  std::vector<double> values;
+  const Unit* unit;
+  std::vector<double> si() const {
+    std::vector<double> converted = values;
+    for (double& value : converted) value *= unit->to_si;
+    return converted;
+  }
+};
+
 // The column holding `quantity` in `table`: "<quantity>_<suffix>" for any known unit of its
-// dimension (d_um, d_mm, h_nm, h_um, ...), converted to SI. Missing: nullopt.
-std::optional<std::vector<double>> input_column(const CsvTable& table, std::string_view quantity_name) {
+// dimension (d_um, d_mm, h_nm, h_um, ...). Missing: nullopt.
+std::optional<MeasuredColumn> input_column(const CsvTable& table, std::string_view quantity_name) {
   const Quantity* quantity = find_quantity(quantity_name);
-  std::optional<std::vector<double>> found;
+  std::optional<MeasuredColumn> found;
   std::string found_name;
   for (const Unit& unit : known_units()) {
     if (unit.dimension != quantity->dimension) continue;
@@ -145,9 +160,7 @@ std::optional<std::vector<double>> input_column(const CsvTable& table, std::stri
                                                          "' both give " + std::string(quantity_name) +
                                                          ": keep one");
     }
-    std::vector<double> values = table.numeric_column(name);
-    for (double& value : values) value *= unit.to_si;
-    found = std::move(values);
+    found = MeasuredColumn{table.numeric_column(name), &unit};
     found_name = name;
   }
   return found;
@@ -294,6 +307,7 @@ int evaluate_file(const EvalOptions& options, const Instrument& parameters, cons
 
   const CsvTable table = read_csv(options.in);
   SampleBlock block(table.rows.size());
+  std::optional<MeasuredColumn> d, d0;
   for (std::string_view required : {"k", "d", "d0"}) {
     auto values = input_column(table, required);
     if (!values) {
@@ -306,10 +320,14 @@ int evaluate_file(const EvalOptions& options, const Instrument& parameters, cons
                              return names;
                            }() + ")");
     }
-    block.set_column(required, *values);
+    block.set_column(required, values->si());
+    if (required == "d") d = values;
+    if (required == "d0") d0 = values;
   }
+  // The stretch in the file's units, as measured (thin_shell.hpp, TubeDiameters).
+  add_hoop_strain(block, d->values, d->unit->to_si, d0->values, d0->unit->to_si);
   const auto thickness = input_column(table, "h");
-  if (thickness) block.set_column("h", *thickness);
+  if (thickness) block.set_column("h", thickness->si());
   const bool has_h = thickness.has_value();
   if (model != nullptr) {
     if (!has_h) {

@@ -84,9 +84,9 @@ CampaignOverrides overrides_of(const TradeoffOptions& options, const po::variabl
 // Checks before any sampling that the CSV may be written and creates its folder when missing;
 // returns the folder when this run created it (removed again if the run fails).
 std::optional<fs::path> prepare_csv_path(const std::string& path, Overwrite overwrite) {
-  check_can_write(path, overwrite);
   std::error_code error;
   if (fs::is_directory(path, error)) throw InputError(path, "is a directory; --out names the table file (e.g. trade.csv)");
+  check_can_write(path, overwrite);
   const fs::path folder = fs::path(path).parent_path();
   if (folder.empty() || fs::exists(folder, error)) return std::nullopt;
   fs::create_directories(folder, error);

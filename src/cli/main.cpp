@@ -1,6 +1,9 @@
 // growthuq: the command-line front end. It only dispatches to a subcommand and turns
 // errors into one line on stderr and a non-zero exit.
 #include <array>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -26,6 +29,22 @@ constexpr std::array commands{
     Command{"indent", "finite-element tube under the probe: force curve, k, d (minutes per curve)", growthuq::cli::run_indent},
 };
 
+// What a command printed on stdout is a result too (eval's values, fit's table): a stdout that
+// could not take it all (a full disk, /dev/full) makes the command fail, as a file that could
+// not be written does. stdout is block-buffered when it is not a terminal, so a write error
+// shows only when the buffer is flushed: here, before exit. Returns the exit status.
+int finish_stdout(const std::string& command, int status) {
+  errno = 0;
+  std::cout.flush();
+  const bool flushed = std::fflush(stdout) == 0;
+  const int error = errno;
+  if (flushed && std::cout && !std::ferror(stdout)) return status;
+  std::cerr << "growthuq" << (command.empty() ? "" : " " + command) << ": error: standard output: write failed"
+            << (error != 0 ? std::string(": ") + std::strerror(error) : std::string())
+            << " (what was printed there is incomplete)\n";
+  return status == 0 ? 2 : status;
+}
+
 void print_usage(std::ostream& out) {
   out << "usage: growthuq <command> [options]   (growthuq <command> --help for its options)\n\n"
          "Monte Carlo uncertainty quantification of pollen tube mechanics and growth.\n\ncommands:\n";
@@ -44,16 +63,16 @@ int main(int argc, char** argv) {
   const std::string name = argv[1];
   if (name == "--help" || name == "-h" || name == "help") {
     print_usage(std::cout);
-    return 0;
+    return finish_stdout("", 0);
   }
   if (name == "--version") {
     std::cout << "growthuq " << GROWTHUQ_VERSION << "\n";
-    return 0;
+    return finish_stdout("", 0);
   }
   for (const Command& command : commands) {
     if (command.name != name) continue;
     try {
-      return command.run(growthuq::cli::Arguments(argv + 2, argv + argc));
+      return finish_stdout(name, command.run(growthuq::cli::Arguments(argv + 2, argv + argc)));
     } catch (const growthuq::InputError& error) {
       // Errors located at the command line itself carry "growthuq <name>" as their location;
       // print it once.

@@ -7,12 +7,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/distributions/sampled_range.hpp"
 #include "io/ini.hpp"
 #include "io/ini_checks.hpp"
 
@@ -183,8 +185,14 @@ LineVariable read_variable(const IniDocument& document, const IniSection& sectio
     throw InputError(section_location, "[" + section.name +
                                            "] source = illustrative needs a one-line 'note' saying why the value was chosen");
   }
-  return LineVariable{section.name, &unit, make_distribution(document, section, *law, law_entry), source,
-                      note ? note->value : std::string(), section.line};
+  Distribution distribution = make_distribution(document, section, *law, law_entry);
+  if (const std::optional<std::string> problem = sampled_range_problem(distribution, unit.to_si)) {
+    throw InputError(section_location, "[" + section.name + "] law " + describe(distribution) + " in " +
+                                           std::string(unit.symbol) + ": " + *problem + ": expected " +
+                                           sampled_range_expectation + ", in the file's unit and in SI units");
+  }
+  return LineVariable{section.name, &unit, std::move(distribution), source, note ? note->value : std::string(),
+                      section.line};
 }
 
 }  // namespace

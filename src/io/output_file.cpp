@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <string_view>
 #include <utility>
 
 #include "growthuq/core/error.hpp"
@@ -24,14 +25,82 @@ std::string read_text_file(const std::string& path) {
 
 }  // namespace detail
 
-void check_can_write(const std::string& path, Overwrite overwrite) {
+namespace {
+
+namespace fs = std::filesystem;
+
+// What a file of `type` is, for messages; empty for a regular file and for no file at all.
+std::string_view special_kind(fs::file_type type) {
+  switch (type) {
+    case fs::file_type::directory: return "a directory";
+    case fs::file_type::character: return "a character device";
+    case fs::file_type::block: return "a block device";
+    case fs::file_type::fifo: return "a FIFO (named pipe)";
+    case fs::file_type::socket: return "a socket";
+    case fs::file_type::regular:
+    case fs::file_type::not_found:
+    case fs::file_type::none:  // status unknown (no permission to look): the open or rename will say
+      return {};
+    default: return "not a regular file";
+  }
+}
+
+// InputError when `path` exists and is not a regular file. The status follows symbolic links,
+// so a link to /dev/null is refused like /dev/null itself (a rename would replace only the
+// link, but a user who points an output at a device means the device).
+void refuse_special_file(const std::string& path) {
   std::error_code error;
-  if (overwrite == Overwrite::refuse && std::filesystem::exists(path, error)) {
+  const std::string_view kind = special_kind(fs::status(path, error).type());
+  if (kind.empty()) return;
+  throw InputError(path, "is " + std::string(kind) +
+                             ": expected a regular file or a path that does not exist (results replace only "
+                             "regular files, also with --force)");
+}
+
+}  // namespace
+
+void check_can_write(const std::string& path, Overwrite overwrite) {
+  refuse_special_file(path);
+  std::error_code error;
+  if (overwrite == Overwrite::refuse && fs::exists(path, error)) {
     throw InputError(path, "already exists; choose another output or pass --force to overwrite");
   }
 }
 
+void prepare_partial_file(const std::string& partial) {
+  std::error_code error;
+  const fs::file_type type = fs::symlink_status(partial, error).type();
+  if (type == fs::file_type::regular || type == fs::file_type::symlink) {
+    fs::remove(partial, error);
+    if (error) throw InputError(partial, "cannot remove the temporary file an earlier run left: " + error.message());
+    return;
+  }
+  const std::string_view kind = special_kind(type);
+  if (!kind.empty()) {
+    throw InputError(partial, "is " + std::string(kind) +
+                                  ": expected no file there (the temporary file a result is written to before it "
+                                  "is renamed into place)");
+  }
+}
+
+void move_into_place(const std::string& partial, const std::string& path) {
+  try {
+    refuse_special_file(path);  // one may have appeared since the writer checked
+  } catch (const InputError&) {
+    std::remove(partial.c_str());
+    throw;
+  }
+  std::error_code error;
+  fs::rename(partial, path, error);
+  if (error) {
+    std::remove(partial.c_str());
+    throw InputError(path, "cannot move the finished file into place: " + error.message());
+  }
+}
+
 PartialFile::PartialFile(std::string path) : path_(std::move(path)), partial_(path_ + ".partial") {
+  refuse_special_file(path_);
+  prepare_partial_file(partial_);
   out_.open(partial_, std::ios::binary | std::ios::trunc);
   if (!out_) throw InputError(partial_, std::string("cannot create: ") + std::strerror(errno));
 }
@@ -51,10 +120,8 @@ void PartialFile::commit() {
   out_.flush();
   out_.close();
   if (!out_) throw InputError(partial_, std::string("write failed: ") + std::strerror(errno));
-  std::error_code error;
-  std::filesystem::rename(partial_, path_, error);
-  if (error) throw InputError(path_, "cannot move the finished file into place: " + error.message());
-  committed_ = true;
+  committed_ = true;  // move_into_place removes the partial file itself when it fails
+  move_into_place(partial_, path_);
 }
 
 void write_file_atomically(const std::string& path, std::string_view content, Overwrite overwrite) {

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <numeric>
 #include <span>
 #include <stdexcept>
@@ -59,7 +58,9 @@ void write_f64_attribute(H5::H5Object& object, const std::string& name, double v
 
 // Objects are created without modification times (HDF5 tracks them by default), so the same
 // campaign gives a byte-identical file whenever it runs, and a resumed run (checkpoint.hpp) the
-// same file as an uninterrupted one.
+// same file as an uninterrupted one. Every group and dataset of the file is made by these two
+// (HDF5 makes the root group without times); attributes live in their object's header and carry
+// no times of their own.
 H5::DSetCreatPropList untimed_dataset() {
   H5::DSetCreatPropList properties;
   H5Pset_obj_track_times(properties.getId(), false);
@@ -170,6 +171,7 @@ ResultsH5Writer::ResultsH5Writer(std::string path, Overwrite overwrite)
   // Errors reach the user as one InputError line, not as HDF5's stack dump on stderr.
   H5::Exception::dontPrint();
   const std::string partial = path_ + ".partial";
+  prepare_partial_file(partial);
   try {
     file_ = std::make_unique<File>(File{partial, H5::H5File(partial, H5F_ACC_TRUNC)});
     create_untimed_group(file_->file, "lines");
@@ -256,13 +258,13 @@ void ResultsH5Writer::finish(const CampaignMetadata& metadata) {
     rethrow_hdf5(partial, error);
   }
   file_.reset();
-  check_can_write(path_, overwrite_);  // a file that appeared meanwhile is not replaced silently
-  std::error_code error;
-  std::filesystem::rename(partial, path_, error);
-  if (error) {
+  try {
+    check_can_write(path_, overwrite_);  // a file that appeared meanwhile is not replaced silently
+  } catch (const InputError&) {
     std::remove(partial.c_str());
-    throw InputError(path_, "cannot move the finished file into place: " + error.message());
+    throw;
   }
+  move_into_place(partial, path_);
 }
 
 ResultsH5Writer::~ResultsH5Writer() {
@@ -286,7 +288,7 @@ H5::Group group_at(H5::H5File& file, const std::string& path) {
   while (start < path.size()) {
     const std::size_t slash = std::min(path.find('/', start), path.size());
     const std::string name = path.substr(start, slash - start);
-    if (!name.empty()) group = group.nameExists(name) ? group.openGroup(name) : group.createGroup(name);
+    if (!name.empty()) group = group.nameExists(name) ? group.openGroup(name) : create_untimed_group(group, name);
     start = slash + 1;
   }
   return group;
@@ -339,7 +341,7 @@ void ResultsH5Writer::write_table(const std::string& path, const std::vector<Ext
     const auto [parent, leaf] = split_path(path);
     H5::Group group = group_at(file_->file, parent);
     const hsize_t size = rows;
-    H5::DataSet dataset = group.createDataSet(leaf, type, H5::DataSpace(1, &size));
+    H5::DataSet dataset = group.createDataSet(leaf, type, H5::DataSpace(1, &size), untimed_dataset());
     if (rows > 0) dataset.write(buffer.data(), type);
   } catch (const H5::Exception& error) {
     rethrow_hdf5(file_->partial, error);

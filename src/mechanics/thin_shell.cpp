@@ -37,10 +37,25 @@ bool on_unstable_branch(double ln_lambda) noexcept { return ln_lambda > 1.0; }
 
 }  // namespace
 
-TurgorResult invert_turgor(double k_measured, double d, double d0,
-                           const Instrument& parameters) noexcept {
+TubeDiameters measured_diameters(double d, double d_to_si, double d0, double d0_to_si) noexcept {
+  // One unit: ratio and difference of the values as measured. Two: of their SI values.
+  const double ratio_d = d_to_si == d0_to_si ? d : d * d_to_si;
+  const double ratio_d0 = d_to_si == d0_to_si ? d0 : d0 * d0_to_si;
+  // d - d0 is exact (Sterbenz) whenever lambda <= 2, so the strain keeps full relative precision
+  // as lambda -> 1, where E = p d / (2 h ln lambda) is most sensitive.
+  return {d * d_to_si, d0 * d0_to_si, ratio_d / ratio_d0, (ratio_d - ratio_d0) / ratio_d0};
+}
+
+TurgorResult invert_turgor(double k_measured, double d, double d0, const Instrument& parameters) noexcept {
+  return invert_turgor(k_measured, diameters_in_si(d, d0), parameters);
+}
+
+TurgorResult invert_turgor(double k_measured, const TubeDiameters& diameters, const Instrument& parameters) noexcept {
   TurgorResult result{nan, nan, nan, nan, nan, nan, SampleStatus::ok};
-  if (!positive_finite(k_measured) || !positive_finite(d) || !positive_finite(d0)) {
+  const double d = diameters.d;
+  const double d0 = diameters.d0;
+  if (!positive_finite(k_measured) || !positive_finite(d) || !positive_finite(d0) ||
+      !std::isfinite(diameters.strain)) {
     result.status = SampleStatus::invalid_input;
     return result;
   }
@@ -52,14 +67,12 @@ TurgorResult invert_turgor(double k_measured, double d, double d0,
   // Probe and tube in series: 1/k_m = 1/k + 1/k_sys (k_sys = inf leaves k = k_m).
   const double k = tube_stiffness(k_measured, parameters);
 
-  result.lambda = d / d0;
-  if (!(d > d0)) {
+  result.lambda = diameters.lambda;
+  if (!(diameters.strain > 0.0)) {
     result.status = SampleStatus::lambda_not_above_one;
     return result;
   }
-  // d - d0 is exact (Sterbenz) whenever lambda < 2, so ln(lambda) keeps full relative
-  // precision as lambda -> 1, where E = p d / (2 h ln lambda) is most sensitive.
-  const double ln_lambda = std::log1p((d - d0) / d0);
+  const double ln_lambda = std::log1p(diameters.strain);
   const double nu = parameters.poisson_ratio;
   result.q = (1.0 - nu * nu) * ln_lambda;
   if (!(result.q < 1.0)) {
@@ -82,16 +95,22 @@ TurgorResult invert_turgor(double k_measured, double d, double d0,
 }
 
 ModulusResult invert_modulus(double p, double d, double d0, double h) noexcept {
+  return invert_modulus(p, diameters_in_si(d, d0), h);
+}
+
+ModulusResult invert_modulus(double p, const TubeDiameters& diameters, double h) noexcept {
   ModulusResult result{nan, nan, nan, SampleStatus::ok};
-  if (!positive_finite(p) || !positive_finite(d) || !positive_finite(d0) || !positive_finite(h)) {
+  const double d = diameters.d;
+  if (!positive_finite(p) || !positive_finite(d) || !positive_finite(diameters.d0) || !positive_finite(h) ||
+      !std::isfinite(diameters.strain)) {
     result.status = SampleStatus::invalid_input;
     return result;
   }
-  if (!(d > d0)) {
+  if (!(diameters.strain > 0.0)) {
     result.status = SampleStatus::lambda_not_above_one;
     return result;
   }
-  const double ln_lambda = std::log1p((d - d0) / d0);
+  const double ln_lambda = std::log1p(diameters.strain);
   if (on_unstable_branch(ln_lambda)) {
     result.status = SampleStatus::unstable_branch;
     return result;

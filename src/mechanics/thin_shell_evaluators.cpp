@@ -6,6 +6,27 @@
 
 namespace growthuq {
 
+namespace {
+
+// Sample i's diameters: with the strain formed at the edge when the block carries it.
+TubeDiameters diameters_of(std::span<const double> d, std::span<const double> d0, std::span<const double> strain,
+                           std::size_t i) {
+  if (strain.empty()) return diameters_in_si(d[i], d0[i]);
+  return {d[i], d0[i], 1.0 + strain[i], strain[i]};
+}
+
+std::span<const double> strain_column(const SampleBlock& block) {
+  return block.has(hoop_strain_column) ? block.column(hoop_strain_column) : std::span<const double>();
+}
+
+}  // namespace
+
+void add_hoop_strain(SampleBlock& block, std::span<const double> d, double d_to_si, std::span<const double> d0,
+                     double d0_to_si) {
+  const std::span<double> strain = block.add_column(hoop_strain_column);
+  for (std::size_t i = 0; i < strain.size(); ++i) strain[i] = measured_diameters(d[i], d_to_si, d0[i], d0_to_si).strain;
+}
+
 ThinShellTurgor::ThinShellTurgor(const Instrument& parameters, std::string_view location)
     : parameters_(parameters) {
   validate(parameters_, location);
@@ -15,6 +36,7 @@ void ThinShellTurgor::evaluate(SampleBlock& block) const {
   const std::span<const double> k = std::as_const(block).column("k");
   const std::span<const double> d = std::as_const(block).column("d");
   const std::span<const double> d0 = std::as_const(block).column("d0");
+  const std::span<const double> strain = strain_column(block);
   const std::span<double> lambda = block.add_column("lambda");
   const std::span<double> alpha = block.add_column("alpha");
   const std::span<double> phi = block.add_column("phi");
@@ -22,7 +44,7 @@ void ThinShellTurgor::evaluate(SampleBlock& block) const {
   const std::span<SampleStatus> status = block.status();
   for (std::size_t i = 0; i < block.size(); ++i) {
     if (status[i] != SampleStatus::ok) continue;
-    const TurgorResult result = invert_turgor(k[i], d[i], d0[i], parameters_);
+    const TurgorResult result = invert_turgor(k[i], diameters_of(d, d0, strain, i), parameters_);
     if (result.status != SampleStatus::ok) {
       status[i] = result.status;
       continue;
@@ -39,13 +61,14 @@ void ThinShellModulus::evaluate(SampleBlock& block) const {
   const std::span<const double> d = std::as_const(block).column("d");
   const std::span<const double> d0 = std::as_const(block).column("d0");
   const std::span<const double> h = std::as_const(block).column("h");
+  const std::span<const double> strain = strain_column(block);
   const std::span<double> E = block.add_column("E");
   const std::span<double> hoop_stress = block.add_column("hoop_stress");
   const std::span<double> wall_stiffness = block.add_column("wall_stiffness");
   const std::span<SampleStatus> status = block.status();
   for (std::size_t i = 0; i < block.size(); ++i) {
     if (status[i] != SampleStatus::ok) continue;
-    const ModulusResult result = invert_modulus(p[i], d[i], d0[i], h[i]);
+    const ModulusResult result = invert_modulus(p[i], diameters_of(d, d0, strain, i), h[i]);
     if (result.status != SampleStatus::ok) {
       status[i] = result.status;
       continue;

@@ -8,6 +8,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/distributions/sampled_range.hpp"
 #include "growthuq/io/csv.hpp"
 
 namespace growthuq {
@@ -83,7 +84,13 @@ VariableFit fit_variable_by_aic(std::string variable, const Unit& unit, std::vec
     FamilyFit candidate;
     candidate.family = family;
     try {
-      candidate.result = fit_distribution(family, fit.values);
+      FitResult result = fit_distribution(family, fit.values);
+      // A law that would draw inf or 0 (one mistyped value can stretch a fit that far) is no
+      // fit: another family may still describe the data (sampled_range.hpp).
+      if (const std::optional<std::string> problem = sampled_range_problem(result.distribution, unit.to_si)) {
+        throw InputError("", describe(result.distribution) + " cannot be sampled: " + *problem);
+      }
+      candidate.result = std::move(result);
       if (candidate.result->aic < best) {
         best = candidate.result->aic;
         fit.chosen = fit.candidates.size();

@@ -4,9 +4,14 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <gsl/gsl_cdf.h>
+
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
 
 namespace growthuq {
 
@@ -130,6 +135,25 @@ QuantitySummary summary_from_order(const std::string& line, const ResultColumn& 
     summary.median_ci_low = summary.median_ci_high = not_a_number;
   }
   return summary;
+}
+
+void require_finite_statistics(const QuantitySummary& summary, std::string_view location) {
+  if (summary.n == 0) return;
+  const bool interval = median_confidence_ranks(summary.n, 0.95).reached;
+  const std::pair<const char*, double> defined[] = {
+      {"median", summary.median}, {"q1", summary.q1},   {"q3", summary.q3},     {"iqr", summary.iqr},
+      {"p10", summary.p10},       {"p90", summary.p90}, {"mean", summary.mean}, {"sd", summary.n > 1 ? summary.sd : 0.0},
+      {"median_ci_low", interval ? summary.median_ci_low : 0.0},
+      {"median_ci_high", interval ? summary.median_ci_high : 0.0}};
+  for (const auto& [name, value] : defined) {
+    if (std::isfinite(value)) continue;
+    const std::string unit = summary.unit.empty() || summary.unit == "1" ? "" : " " + summary.unit;
+    throw InputError(std::string(location),
+                     "line '" + summary.line + "', " + summary.quantity + ": " + name + " = " + format_double(value) +
+                         ": expected a finite statistic of " + std::to_string(summary.n) +
+                         " values; they are too large for double precision (median " + format_double(summary.median) +
+                         unit + ", p90 " + format_double(summary.p90) + unit + "): check the line's laws or data");
+  }
 }
 
 QuantitySummary summarize_quantity(const std::string& line, const ResultColumn& column,

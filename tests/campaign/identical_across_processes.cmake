@@ -1,8 +1,9 @@
 # Runs a test campaign once without MPI and once under `mpirun -np PROCESSES`, and requires
 # samples.csv, summary.csv and (for raw-data lines with a bootstrap) data_uncertainty.csv to be
 # identical byte for byte, and results.h5 value for value (its analyses and raw-data fits are
-# computed by all processes together; HDF5 stores times, so its bytes differ), when
-# /usr/bin/python3 has h5py: results must not depend on the number of processes.
+# computed by all processes together; the command line stored in it names another --out, so its
+# bytes differ), when /usr/bin/python3 has h5py: results must not depend on the number of
+# processes.
 # Variables: CLI, MPIEXEC, PROCESSES, CAMPAIGN, WORK, COMPARE (tools/bench/compare_results_h5.py);
 # SAMPLES (optional) overrides the campaign's samples per line.
 file(REMOVE_RECURSE "${WORK}")

@@ -18,13 +18,15 @@
 // new draw of the shipped data could fail this test with a probability of about 10 %. The
 // shipped set's largest |z| is printed.
 //
-// Also: the results.h5 layout of raw-data lines through the CLI and h5py (check_raw_results.py).
+// Also: the results.h5 layout of raw-data lines through the CLI and h5py (check_raw_results.py),
+// and its bytes, the same whenever the campaign runs.
 #include <doctest/doctest.h>
 
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -33,6 +35,7 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include "growthuq/campaign/campaign_file.hpp"
 #include "growthuq/campaign/campaign_run.hpp"
@@ -168,4 +171,25 @@ TEST_CASE("from_raw: results.h5 holds the fits, the curves with their fitted mod
   INFO(report);
   CHECK(code == 0);
   CHECK(report.find("raw-data results checked with h5py") != std::string::npos);
+}
+
+TEST_CASE("from_raw: results.h5 of a raw-data campaign is the same file byte for byte whenever it runs") {
+  // Its fits, curves and data-uncertainty tables and their groups carry no HDF5 times: the same
+  // command run again more than a second later (HDF5 times count seconds) writes the same bytes.
+  const fs::path scratch = fs::temp_directory_path() / ("growthuq_test_from_raw_bytes_" + std::to_string(::getpid()));
+  fs::remove_all(scratch);
+  fs::create_directories(scratch);
+  const std::string campaign = std::string(GROWTHUQ_SOURCE_DIR) + "/tests/campaign/data/raw_campaign.ini";
+  const std::string run = "cd '" + scratch.string() + "' && " + std::string(GROWTHUQ_CLI) + " run '" + campaign +
+                          "' --out results --quiet --force > run.txt 2>&1";
+  REQUIRE(std::system(run.c_str()) == 0);
+  fs::rename(scratch / "results" / "results.h5", scratch / "first.h5");
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  REQUIRE(std::system(run.c_str()) == 0);
+  const std::string first = slurp(scratch / "first.h5");
+  const std::string second = slurp(scratch / "results" / "results.h5");
+  fs::remove_all(scratch);
+  REQUIRE(first.size() > 0);
+  CHECK(first.size() == second.size());
+  CHECK(first == second);
 }

@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
 #include "growthuq/distributions/line_file.hpp"
+#include "growthuq/distributions/sampled_range.hpp"
 
 using namespace growthuq;
 
@@ -150,4 +152,49 @@ TEST_CASE("line file: each mistake is one error naming file and line") {
   const std::string unknown_header_key = temporary_file("[line]\nname = x\nowner = me\n" + k_ok);
   CHECK_THROWS_WITH_AS(read_line_file(unknown_header_key), (unknown_header_key + ":3: unknown key 'owner' in [line]: expected name or description").c_str(), InputError);
   CHECK_THROWS_AS(read_line_file("/nonexistent/line.ini"), InputError);
+}
+
+TEST_CASE("a law whose values overflow or underflow where a design draws is refused at its section") {
+  // ": [k] law <describe> in N/m: <problem>: expected <...>" at the section's line (3).
+  const auto refused = [](const std::string& law, const std::string& problem) {
+    const std::string message = error_of("[k]\nlaw = " + law + "\nunit = N/m\nsource = table\n");
+    CAPTURE(message);
+    CHECK(message.rfind(":3: [k] law ", 0) == 0);
+    CHECK(message.find(" in N/m: " + problem + ": expected " + std::string(sampled_range_expectation) +
+                       ", in the file's unit and in SI units") != std::string::npos);
+  };
+  refused("lognormal\nmu = 800\nsigma = 0.2", "its quantile at probability 1 - 2^-53 (1 - 1.1e-16) is inf");
+  refused("lognormal\nmu = 0\nsigma = 100", "its quantile at probability 1 - 2^-53 (1 - 1.1e-16) is inf");
+  refused("weibull\nshape = 1e-3\nscale = 1", "its quantile at probability 1 - 2^-53 (1 - 1.1e-16) is inf");
+  // (Its true quantiles underflow to 0; the computed one at the upper end is inf.)
+  refused("gamma\nshape = 1e-300\nscale = 1", "its quantile at probability 1 - 2^-53 (1 - 1.1e-16) is inf");
+  refused("normal\nmean = 0\nsd = 1e308", "its quantile at probability 1 - 2^-53 (1 - 1.1e-16) is inf");
+  refused("lognormal\nmu = 0\nsigma = 80", "its quantile at probability 2^-86 (1.3e-26) is 0");
+  // A third of gamma(0.05)'s mass lies below 1e-10: its lowest drawn values underflow to 0.
+  refused("gamma\nshape = 0.05\nscale = 1", "its quantile at probability 2^-86 (1.3e-26) is 0");
+
+  // Wide but representable laws stay accepted.
+  CHECK(error_of("[k]\nlaw = lognormal\nmu = 0\nsigma = 60\nunit = N/m\nsource = table\n") == "no error");
+  CHECK(error_of("[k]\nlaw = weibull\nshape = 0.5\nscale = 1\nunit = N/m\nsource = table\n") == "no error");
+  CHECK(error_of("[k]\nlaw = gamma\nshape = 0.2\nscale = 1\nunit = N/m\nsource = table\n") == "no error");
+}
+
+TEST_CASE("sampled_range_problem: the ends of the drawn range, in the law's unit and scaled to SI") {
+  CHECK_FALSE(sampled_range_problem(Lognormal(1.05, 0.21)));
+  CHECK_FALSE(sampled_range_problem(Gamma(50, 0.06)));
+  CHECK_FALSE(sampled_range_problem(Weibull(5, 3)));
+  CHECK_FALSE(sampled_range_problem(Normal(145, 30)));
+  CHECK_FALSE(sampled_range_problem(Empirical({1.0, 2.0, 3.0})));
+  CHECK(sampled_range_problem(Lognormal(710, 0.01)) == "its quantile at probability 1 - 2^-53 (1 - 1.1e-16) is inf");
+  // Finite in its unit, 0 in SI: about exp(-725) = 1.3e-315 nm (a subnormal double) is 0 m.
+  CHECK(sampled_range_problem(Lognormal(-725, 0.01), 1e-9) ==
+        "its quantile at probability 1 - 2^-53 (1 - 1.1e-16) is " +
+            format_double(quantile(Distribution(Lognormal(-725, 0.01)), highest_drawn_probability)) + " (0 in SI units)");
+  CHECK_FALSE(sampled_range_problem(Lognormal(-725, 0.01)));
+  // Finite in its unit, inf in SI.
+  CHECK(sampled_range_problem(Lognormal(700, 0.01), 1e6)->find(" in SI units)") != std::string::npos);
+  // The design's extremes are inside the range: the largest double below 1, and a point 2^-54 of
+  // a stratum into the first of 2^32 - 1 strata.
+  CHECK(highest_drawn_probability == std::nextafter(1.0, 0.0));
+  CHECK(lowest_drawn_probability <= 0x1.0p-54 / 4294967295.0);
 }

@@ -1,21 +1,25 @@
 // results.h5: every dataset and attribute read back with the HDF5 C++ API and compared exactly,
 // the same file checked from Python with h5py (the users' reader), and the file's life cycle
-// (.partial while writing, removed when abandoned, existing results never overwritten silently).
+// (.partial while writing, removed when abandoned, existing results never overwritten silently,
+// no times recorded, so the bytes depend on the results only).
 #include <doctest/doctest.h>
 
 #include <H5Cpp.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <thread>
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/units.hpp"
 #include "growthuq/io/results_h5.hpp"
 #include "growthuq/stats/quantity_summary.hpp"
 #include "support/scratch_directory.hpp"
+#include "support/text_file.hpp"
 
 using namespace growthuq;
 using namespace growthuq::testing;
@@ -398,4 +402,57 @@ TEST_CASE("additional tables, arrays and attributes read back exactly") {
   CHECK(indices == std::vector<std::int32_t>{0, 0, 7});
   CHECK(read_string(file.openGroup("lines/extra/points"), "fit") == "step");
   CHECK(read_scalar<double>(file.openDataSet("lines/extra/points/t_s"), "scale", H5::PredType::NATIVE_DOUBLE) == 2.5);
+}
+
+namespace {
+
+// Every kind of object the writer makes: line groups and their datasets, the summary, the
+// additional tables, arrays and attributes of raw-data campaigns (a group made for an
+// attribute, as the data-uncertainty method is written) and the root's attributes.
+void write_every_kind_of_object(const std::string& path) {
+  ResultsH5Writer writer(path, Overwrite::refuse);
+  for (const LineResult& line : {wild_type(), xxt1_xxt2()}) writer.write_line(line, summaries_of(line), analyze_line(line));
+  writer.write_table("fits", {ExtraColumn{"variable", {"k", "d0"}}, ExtraColumn{"aic", {}, {12.5, -3.25}}});
+  writer.write_table("lines/wild_type/fits", {ExtraColumn{"n", {}, {}, {57, 46}}});
+  writer.write_array("lines/wild_type/curves/t_s", std::vector<double>{0.0, 0.02});
+  writer.write_array("lines/wild_type/curves/curve_index", std::vector<std::int32_t>{0, 7});
+  writer.write_attribute("data_uncertainty", "method", "bootstrap");
+  writer.write_attribute("lines/wild_type/curves/t_s", "scale", 2.5);
+  writer.finish(metadata());
+}
+
+// The times HDF5 recorded in the object headers of `path`, as "<object>: <time>" per object
+// that has any (HDF5 records them unless told not to).
+std::vector<std::string> recorded_times(const std::string& path) {
+  const H5::H5File file(path, H5F_ACC_RDONLY);
+  std::vector<std::string> found;
+  const auto visit = [](hid_t, const char* name, const H5O_info_t* info, void* data) -> herr_t {
+    for (const time_t time : {info->atime, info->mtime, info->ctime, info->btime}) {
+      if (time != 0) {
+        static_cast<std::vector<std::string>*>(data)->push_back(std::string(name) + ": " + std::to_string(time));
+        break;
+      }
+    }
+    return 0;
+  };
+  REQUIRE(H5Ovisit2(file.getId(), H5_INDEX_NAME, H5_ITER_NATIVE, visit, &found, H5O_INFO_TIME) >= 0);
+  return found;
+}
+
+}  // namespace
+
+TEST_CASE("results.h5 records no times: the same results give the same bytes whenever they are written") {
+  const Scratch scratch("untimed");
+  const std::string first = scratch.path("first.h5");
+  const std::string second = scratch.path("second.h5");
+  write_every_kind_of_object(first);
+  CHECK(recorded_times(first) == std::vector<std::string>{});
+  // Times have a resolution of one second: a second file written more than a second later.
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  write_every_kind_of_object(second);
+  const std::string a = slurp(first);
+  const std::string b = slurp(second);
+  REQUIRE(a.size() > 0);
+  CHECK(a.size() == b.size());
+  CHECK(a == b);
 }

@@ -206,3 +206,32 @@ TEST_CASE("fit_variable_by_aic: a family that cannot fit is kept as a failure, t
     if (!candidate.result) CHECK(candidate.failure.find("positive") != std::string::npos);
   }
 }
+
+TEST_CASE("fit_variable_by_aic: a fitted law that would draw inf or 0 is a failed family, not a fit") {
+  // 40 stiffnesses and one mistyped 1e300: every family's fit stretches past double precision
+  // (the lognormal's sigma ~ 100 reaches inf, the gamma's and Weibull's tiny shapes reach 0, the
+  // normal's sd is inf), so none is kept and the error names the data and each reason.
+  std::vector<double> values;
+  for (int i = 0; i < 40; ++i) values.push_back(2.0 + 0.05 * i);
+  values.push_back(1e300);
+  try {
+    (void)fit_variable_by_aic("k", find_unit("N/m", "test", "unit"), values,
+                              {std::begin(all_fit_families), std::end(all_fit_families)}, "k.csv, column k_N_per_m",
+                              "raw.ini:7");
+    FAIL("expected no family to be kept");
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    CAPTURE(message);
+    CHECK(message.rfind("raw.ini:7: k (k.csv, column k_N_per_m): no family could be fitted (", 0) == 0);
+    CHECK(message.find("lognormal: lognormal(") != std::string::npos);
+    CHECK(message.find("cannot be sampled: its quantile at probability 1 - 2^-53 (1 - 1.1e-16) is inf") != std::string::npos);
+    CHECK(message.find("cannot be sampled: its quantile at probability 2^-86 (1.3e-26) is 0") != std::string::npos);
+  }
+
+  // A wide but representable spread keeps its fit.
+  std::vector<double> wide;
+  for (int i = 0; i < 40; ++i) wide.push_back(std::exp(0.5 * i));
+  const VariableFit fit = fit_variable_by_aic("k", find_unit("N/m", "test", "unit"), wide,
+                                              {std::begin(all_fit_families), std::end(all_fit_families)}, "test", "test");
+  CHECK(fit.candidates[fit.chosen].result.has_value());
+}

@@ -141,3 +141,29 @@ TEST_CASE("growthuq sample: bad input gives one line naming the problem") {
   CHECK(run.err.find("cannot be imposed on 3 samples") != std::string::npos);
   CHECK_FALSE(fs::exists(design + ".partial"));
 }
+
+TEST_CASE("growthuq sample: a law that would draw inf or 0 is refused before any file is written") {
+  const struct {
+    const char* law;
+    const char* problem;
+  } cases[] = {
+      {"law = gamma\nshape = 1e-300\nscale = 1\n", "its quantile at probability 1 - 2^-53 (1 - 1.1e-16) is inf"},
+      {"law = weibull\nshape = 1e-3\nscale = 1\n", "its quantile at probability 1 - 2^-53 (1 - 1.1e-16) is inf"},
+      {"law = gamma\nshape = 0.05\nscale = 1\n", "its quantile at probability 2^-86 (1.3e-26) is 0"},
+      {"law = lognormal\nmu = 800\nsigma = 0.2\n", "its quantile at probability 1 - 2^-53 (1 - 1.1e-16) is inf"},
+  };
+  for (const auto& c : cases) {
+    CAPTURE(c.law);
+    const std::string line = write_text("overflow.ini", std::string("[line]\nname = overflow\n\n[k]\n") + c.law +
+                                                            "unit = N/m\nsource = illustrative\nnote = test\n");
+    const std::string design = (directory / "overflow.csv").string();
+    fs::remove(design);
+    const Run run = run_sample("--line " + line + " --samples 100 --seed 1 --out " + design);
+    CHECK(run.status == 2);
+    CHECK(run.err.rfind("growthuq sample: error: " + line + ":4: [k] law ", 0) == 0);
+    CHECK(run.err.find(std::string(" in N/m: ") + c.problem + ": expected a law whose values are finite") != std::string::npos);
+    CHECK(run.out.find("wrote") == std::string::npos);
+    CHECK_FALSE(fs::exists(design));
+    CHECK_FALSE(fs::exists(design + ".partial"));
+  }
+}

@@ -1,5 +1,7 @@
 // Writing result files so that a failure never leaves a half-written file that looks
-// complete, and an existing result is never overwritten unless the user asked for it.
+// complete, an existing result is never overwritten unless the user asked for it, and nothing
+// but a regular file is ever replaced: --force run as root over /dev/null would otherwise
+// rename a regular file over the device node.
 #pragma once
 
 #include <fstream>
@@ -18,8 +20,10 @@ void write_file_atomically(const std::string& path, std::string_view content,
 
 // A file written piece by piece through "<path>.partial" and renamed into place by commit():
 // destroyed before commit() (a failure, an interruption), it removes the partial file, so no
-// half-written file looks complete. Whether `path` may be replaced is the caller's to check
-// first (check_can_write). I/O failures are InputErrors naming the file and the reason.
+// half-written file looks complete. Whether an existing regular file at `path` may be replaced
+// is the caller's to check first (check_can_write); a `path` that is not a regular file is
+// refused here already (and again by commit(), in case one appeared meanwhile). I/O failures
+// are InputErrors naming the file and the reason.
 class PartialFile {
  public:
   explicit PartialFile(std::string path);
@@ -38,8 +42,20 @@ class PartialFile {
   bool committed_ = false;
 };
 
-// InputError when `path` exists and overwriting was not allowed (checked before long work
-// starts, so a run does not fail only at its end).
+// InputError when `path` exists and overwriting was not allowed, or when it exists and is not
+// a regular file (a directory, a device, a FIFO, a socket; a symbolic link counts as what it
+// points to), whatever `overwrite` says (checked before long work starts, so a run does not
+// fail only at its end).
 void check_can_write(const std::string& path, Overwrite overwrite);
+
+// The steps every writer shares (PartialFile, results.h5), for one that creates its partial
+// file itself:
+// Before creating `partial`: removes what an interrupted run left there (a regular file or a
+// symbolic link, which would otherwise be written through); InputError when it is anything
+// else (a FIFO there would block the open, a device would take the data).
+void prepare_partial_file(const std::string& partial);
+// The finished `partial` renamed to `path`. InputError, with `partial` removed, when `path`
+// exists and is not a regular file (check_can_write) or the rename fails.
+void move_into_place(const std::string& partial, const std::string& path);
 
 }  // namespace growthuq

@@ -3,13 +3,27 @@
 //   ThinShellTurgor   reads k, d, d0      writes lambda, alpha, phi, p
 //   ThinShellModulus  reads p, d, d0, h   writes E, hoop_stress, wall_stiffness
 //   ThinShellForward  reads p, E, h, d0   writes d, k          (used by `growthuq correlate`)
-// Each loops over contiguous columns calling the closed forms of thin_shell.hpp.
+// Each loops over contiguous columns calling the closed forms of thin_shell.hpp. Turgor and
+// modulus take the stretch from the block's hoop_strain column when it has one (formed where the
+// diameters entered, in their measured unit: add_hoop_strain), and from d and d0 in SI otherwise,
+// which loses digits of lambda - 1 near lambda = 1 (TubeDiameters); lambda is then 1 + strain.
 #pragma once
+
+#include <span>
+#include <string_view>
 
 #include "growthuq/evaluation/evaluator.hpp"
 #include "growthuq/mechanics/thin_shell.hpp"
 
 namespace growthuq {
+
+inline constexpr std::string_view hoop_strain_column = "hoop_strain";
+
+// Adds the hoop_strain column, (d - d0)/d0 per sample from the diameters as measured (values
+// `d`, `d0` in units of factors d_to_si, d0_to_si; measured_diameters). The caller sets the SI
+// columns d and d0 itself (d * d_to_si, d0 * d0_to_si).
+void add_hoop_strain(SampleBlock& block, std::span<const double> d, double d_to_si, std::span<const double> d0,
+                     double d0_to_si);
 
 class ThinShellTurgor final : public Evaluator {
  public:

@@ -44,6 +44,13 @@ bool counts_in_summary(const ResultColumn& column, SampleStatus status);
 QuantitySummary summarize_quantity(const std::string& line, const ResultColumn& column,
                                    std::span<const SampleStatus> status);
 
+// InputError at `location` naming the summary's line, quantity and statistic when a statistic
+// it defines (every one but those the rules above leave undefined for its n) is not finite:
+// counted values so large (above ~1e154 for sd) that double precision cannot hold their sum or
+// squares. Such a summary is refused rather than written with an inf or an empty cell that
+// reads as "undefined".
+void require_finite_statistics(const QuantitySummary& summary, std::string_view location);
+
 // The same in two halves, for a caller that has the counted values' order from elsewhere (one
 // sort serving the ranks too): the 0-based positions of the ascending order it reads (sorted,
 // unique), and the summary from the values at those positions plus the counted values' mean
