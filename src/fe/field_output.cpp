@@ -155,14 +155,12 @@ void write_shell_field(const ShellFeField& field, const std::string& xdmf_path, 
   check_can_write(h5_path, overwrite);
   check_field(field, xdmf_path);
 
+  // Through the steps every writer shares (io/output_file.hpp): never written through a stale
+  // link or into a special file, never renamed over one.
   const std::string partial = h5_path + ".partial";
+  prepare_partial_file(partial);
   write_data(field, partial);
-  std::error_code error;
-  std::filesystem::rename(partial, h5_path, error);
-  if (error) {
-    std::remove(partial.c_str());
-    throw InputError(h5_path, "cannot move the finished file into place: " + error.message());
-  }
+  move_into_place(partial, h5_path);
   // The XDMF names the data file relative to itself, so the pair can be moved together.
   try {
     write_file_atomically(xdmf_path, xdmf_text(field, std::filesystem::path(h5_path).filename().string()), overwrite);

@@ -72,14 +72,14 @@ void add_octant(MeshBuilder& builder, const Vector3d& a, const Vector3d& b, cons
 }
 
 // Conforming red-green refinement (Bank, Sherman and Weiser 1983): every edge longer than the
-// size field at its midpoint is marked; a face with two marked edges, or with one that is not
-// its longest, has all three marked (so a face is cut in two only through its longest edge,
-// which bounds the angles); then faces with three marked edges are cut into four similar ones
-// ("red") and faces with one into two ("green"). Red refinement keeps a regular mesh regular:
-// the new vertices have valence 6 and the old ones keep theirs, so the irregular vertices stay
-// where the refinement levels meet, away from the focus (longest-edge bisection instead leaves
-// "4-8" patches of valence 4 and 8 everywhere it refines, mesh_quality.hpp). Midpoints are
-// projected onto the exact surface. Repeated until every edge fits the size field.
+// size field at its midpoint is marked; a face with two marked edges has its third marked too;
+// then faces with three marked edges are cut into four similar ones ("red") and faces with one
+// into two through that edge ("green"). Red refinement keeps a regular mesh regular: the new
+// vertices have valence 6 and the old ones keep theirs, so the irregular vertices stay where the
+// refinement levels meet, away from the focus (longest-edge bisection instead leaves "4-8"
+// patches of valence 4 and 8 everywhere it refines, mesh_quality.hpp). The angles a green cut
+// halves are evened out by the flips and smoothing that follow (improve_triangulation).
+// Midpoints are projected onto the exact surface. Repeated until every edge fits the size field.
 void refine(std::vector<Vector3d>& points, std::vector<std::array<int, 3>>& faces,
             const std::function<double(const Vector3d&)>& size, const Projection& project,
             int max_faces) {
@@ -107,14 +107,6 @@ void refine(std::vector<Vector3d>& points, std::vector<std::array<int, 3>>& face
       if (length[e] > size(0.5 * (p + q))) marked[e] = 1, any = true;
     }
     if (!any) return;
-    auto longest = [&](std::size_t f) {
-      int best = 0;
-      for (int k = 1; k < 3; ++k) {
-        const int e = face_edges[f][k], b = face_edges[f][best];
-        if (length[e] > length[b] || (length[e] == length[b] && e < b)) best = k;
-      }
-      return best;
-    };
     for (bool changed = true; changed;) {
       changed = false;
       for (std::size_t f = 0; f < faces.size(); ++f) {
