@@ -49,8 +49,11 @@ std::uint64_t stream_key(std::uint64_t seed, std::string_view line, std::string_
 constexpr double bits_to_unit(std::uint64_t bits) noexcept {
   return static_cast<double>(static_cast<std::int64_t>(bits >> 11)) * 0x1.0p-53;
 }
+// (k + 1/2) 2^-53 for the 53-bit value k: for k = 2^53 - 1 the sum rounds (to even) to 2^53 and
+// the number to exactly 1, so that one bit pattern is mapped to the largest double below 1.
 constexpr double bits_to_open_unit(std::uint64_t bits) noexcept {
-  return (static_cast<double>(static_cast<std::int64_t>(bits >> 11)) + 0.5) * 0x1.0p-53;
+  const double u = (static_cast<double>(static_cast<std::int64_t>(bits >> 11)) + 0.5) * 0x1.0p-53;
+  return u < 1.0 ? u : 1.0 - 0x1.0p-53;
 }
 
 // Counter-based randomness: the index-th number of the stream `key`.
