@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -18,7 +19,7 @@ long long edge_key(int u, int v, long long stride) { return std::min(u, v) * str
 // The smallest interior angle of a triangle, in radians (0 for a degenerate one).
 double smallest_angle(const Vector3d& a, const Vector3d& b, const Vector3d& c) {
   const std::array<Vector3d, 3> p = {a, b, c};
-  double smallest = M_PI;
+  double smallest = std::numbers::pi;
   for (int k = 0; k < 3; ++k) {
     const Vector3d u = p[(k + 1) % 3] - p[k], w = p[(k + 2) % 3] - p[k];
     const double nu = u.norm(), nw = w.norm();
@@ -59,8 +60,7 @@ Adjacency adjacency(const std::vector<Vector3d>& x, const Faces& faces, int vert
   }
   // On the mirror plane: every boundary edge at the vertex lies in y = 0 (so a corner where the
   // mirror plane meets an open end is not one, and never slides).
-  adj.mirror.assign(static_cast<std::size_t>(vertex_count), 0);
-  for (std::size_t v = 0; v < x.size() && v < adj.mirror.size(); ++v) adj.mirror[v] = adj.boundary[v];
+  adj.mirror = adj.boundary;
   for (const auto& [key, pair] : adj.edge_faces) {
     if (pair[1] >= 0) continue;
     const auto u = static_cast<std::size_t>(key / stride), v = static_cast<std::size_t>(key % stride);
@@ -69,16 +69,23 @@ Adjacency adjacency(const std::vector<Vector3d>& x, const Faces& faces, int vert
   return adj;
 }
 
-// The squared distance of a vertex's valence (after `change` more edges) from the ideal, weighted
-// by its importance. A vertex on the mirror plane y = 0 is counted by its valence in the full
-// model, 2 (v - 1): the mirror image adds its v - 2 interior neighbours. Elsewhere on the boundary
-// (an open end) the ideal is 4, inside 6.
+// A vertex's valence as the full model sees it, after `change` more edges, and its ideal: on the
+// mirror plane y = 0, 2 (v - 1) (the mirror image adds its v - 2 interior neighbours) against 6;
+// elsewhere on the boundary (an open end) v against 4; inside, v against 6.
+struct Valence {
+  int value, ideal;
+};
+Valence valence_of(const Adjacency& adj, std::size_t v, int change = 0) {
+  const int valence = adj.valence[v] + change;
+  if (adj.mirror[v]) return {2 * (valence - 1), 6};
+  return {valence, adj.boundary[v] ? 4 : 6};
+}
+
+// The squared distance of a vertex's valence from the ideal, weighted by its importance.
 double valence_defect(const Adjacency& adj, const std::vector<double>& weight, int v, int change) {
   const auto i = static_cast<std::size_t>(v);
-  const int valence = adj.valence[i] + change;
-  double d = valence - 6;
-  if (adj.mirror[i]) d = 2 * (valence - 1) - 6;
-  else if (adj.boundary[i]) d = valence - 4;
+  const Valence valence = valence_of(adj, i, change);
+  const double d = valence.value - valence.ideal;
   return weight[i] * d * d;
 }
 
@@ -97,7 +104,7 @@ int flip_pass(const std::vector<Vector3d>& x, const std::vector<double>& weight,
   Adjacency adj = adjacency(x, faces, n);
   std::vector<char> touched(faces.size(), 0);
   std::unordered_set<long long> created;  // edges made by this pass's flips
-  const double fold_limit = std::cos(25.0 * M_PI / 180.0);
+  const double fold_limit = std::cos(25.0 * std::numbers::pi / 180.0);
   int flips = 0;
   for (const auto& [key, pair] : adj.edge_faces) {
     const int f1 = pair[0], f2 = pair[1];
@@ -129,7 +136,7 @@ int flip_pass(const std::vector<Vector3d>& x, const std::vector<double>& weight,
     const double old_quality = std::min(smallest_angle(x[u], x[w], x[c]), smallest_angle(x[w], x[u], x[d]));
     const double new_quality = std::min(smallest_angle(x[u], x[d], x[c]), smallest_angle(x[d], x[w], x[c]));
     // Valence may cost some shape, not much: the smoothing that follows evens the angles out.
-    if (new_quality < std::min(0.5 * old_quality, 20.0 * M_PI / 180.0)) continue;
+    if (new_quality < std::min(0.5 * old_quality, 20.0 * std::numbers::pi / 180.0)) continue;
     faces[static_cast<std::size_t>(f1)] = {u, d, c};
     faces[static_cast<std::size_t>(f2)] = {d, w, c};
     touched[static_cast<std::size_t>(f1)] = touched[static_cast<std::size_t>(f2)] = 1;
@@ -159,7 +166,7 @@ void smoothing_pass(std::vector<Vector3d>& x, const Faces& faces,
     }
   }
   auto worst_angle = [&](std::size_t v) {
-    double worst = M_PI;
+    double worst = std::numbers::pi;
     for (int f : vertex_faces[v]) {
       const auto& t = faces[static_cast<std::size_t>(f)];
       worst = std::min(worst, smallest_angle(x[t[0]], x[t[1]], x[t[2]]));
@@ -227,7 +234,7 @@ ValenceCounts valence_counts(const std::vector<Vector3d>& points, const Faces& f
   for (std::size_t v = 0; v < points.size(); ++v) {
     if (adj.valence[v] == 0 || (adj.boundary[v] && !adj.mirror[v])) continue;
     if (counted && !counted(points[v])) continue;
-    const int valence = adj.mirror[v] ? 2 * (adj.valence[v] - 1) : adj.valence[v];
+    const int valence = valence_of(adj, v).value;
     ++counts.interior;
     if (valence <= 4 || valence >= 8) ++counts.irregular;
   }
