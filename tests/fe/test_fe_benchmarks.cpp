@@ -1,6 +1,6 @@
 // A published nonlinear shell benchmark: the clamped semi-cylinder under a point load at its
 // free end (Sze, Liu and Lo 2004, section 3.7), large deflection and large rotation with small
-// strain, within 2 % of the reference deflection at the final load.
+// strain: the deflection within 2 % of the reference at every tabulated load.
 //
 // The model is the engine's shell as it is (membrane triangles, the face-and-neighbours
 // bending element, St-VK wall: at strains below 1 % the law does not matter). The straight
@@ -9,11 +9,21 @@
 // rings (see semicylinder_benchmark.hpp). The load is dead and applied in force steps, each
 // started from the previous solution, cut in half when Newton does not converge.
 //
-// Measured (2026-12-02, 48 x 48 cells, diagonals mirrored about the crown): within +3.2 % of the
-// reference up to P/Pmax = 0.85 (+2.4 % at 0.25), then the path jumps (between 0.85 and 0.90)
-// to a deeper branch, final deflection 2.219 against 1.715 (+29 %): the 2 % target is NOT met.
-// On 24 x 24: +6 % at 0.25, a jump between 0.85 and 0.90, final +17 %. Without the free edge's
-// condensation (bending.hpp) the 24 x 24 path moves by under 1 %. The tolerance stays at 2 %.
+// The mesh: 48 x 48 cells, graded in the hoop direction towards the straight edges and the
+// crown and in the axial direction towards both ends (hoop_grading and axial_grading 0.6,
+// semicylinder_benchmark.hpp says why). Measured (2026-12-02), deflection at P/Pmax = 0.05 and
+// 1 against the reference 0.05421 and 1.71505:
+//   48 x 48 uniform                 -        2.219 (+29 %: a jump to a deeper branch at 0.85-0.9)
+//   hoop graded only:  24 x 24      0.0644   1.918 (+11.8 %)
+//                      48 x 24      0.0656   1.760 (+2.6 %)
+//                      48 x 48      0.0576   1.743 (+1.6 %)
+//                      72 x 36      0.0603   1.733 (+1.1 %)
+//                      96 x 48      0.0579   1.724 (+0.5 %)
+//   both graded:       48 x 48      0.0540   1.743 (+1.6 %)
+// so the path converges onto the reference from above at large loads, and the small loads need
+// the axial cells near the loaded end (the hoop refinement alone leaves 0.05 at +6.7 %). On the
+// mesh used every tabulated point is within 2 % in deflection at its load; the largest
+// deviation is +1.84 % at P/Pmax = 0.65.
 #include <doctest/doctest.h>
 
 #include <Eigen/Core>
@@ -42,7 +52,8 @@ struct LoadPath {
 };
 
 LoadPath run_semicylinder(int hoop_segments, int axial_segments) {
-  const testing::SemicylinderMesh built = testing::make_semicylinder_mesh(hoop_segments, axial_segments);
+  const testing::SemicylinderMesh built =
+      testing::make_semicylinder_mesh(hoop_segments, axial_segments, /*alternating=*/false, /*hoop_grading=*/0.6, /*axial_grading=*/0.6);
   fe::ShellProblem problem;
   problem.mesh = built.mesh;
   problem.material.law = fe::MaterialLaw::saint_venant_kirchhoff;
@@ -81,28 +92,30 @@ LoadPath run_semicylinder(int hoop_segments, int axial_segments) {
   return path;
 }
 
-// Linear interpolation of the path's deflection at a load fraction.
-double deflection_at(const LoadPath& path, double fraction) {
-  double f0 = 0.0, w0 = 0.0;
-  for (std::size_t i = 0; i < path.load_fraction.size(); ++i) {
-    const double f1 = path.load_fraction[i], w1 = path.deflection[i];
-    if (f1 >= fraction - 1e-12) return w0 + (w1 - w0) * (fraction - f0) / (f1 - f0);
-    f0 = f1, w0 = w1;
+// Linear interpolation of a path y(x) given as samples with x increasing; NaN outside it.
+double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
+  double x0 = 0.0, y0 = 0.0;
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    const double x1 = xs[i], y1 = ys[i];
+    if (x1 >= x - 1e-12) return y0 + (y1 - y0) * (x - x0) / (x1 - x0);
+    x0 = x1, y0 = y1;
   }
   return NAN;
 }
 
 }  // namespace
 
-TEST_CASE("the clamped semi-cylinder under a point load matches Sze et al. 2004 within 2 % at the final load") {
+TEST_CASE("the clamped semi-cylinder under a point load matches Sze et al. 2004 within 2 %") {
   const LoadPath path = run_semicylinder(48, 48);
   std::printf("semicylinder: %zu steps, %d Newton iterations, %s\n", path.load_fraction.size(), path.newton_iterations,
               path.message.c_str());
   REQUIRE(path.completed);
   for (const auto& reference : semicylinder_reference()) {
-    const double w = deflection_at(path, reference.load_fraction);
+    const double w = interpolate(path.load_fraction, path.deflection, reference.load_fraction);
     std::printf("semicylinder P/Pmax %.3f w %.5f reference %.5f (%+.2f %%)\n", reference.load_fraction, w,
                 reference.deflection, 100.0 * (w / reference.deflection - 1.0));
+    CAPTURE(reference.load_fraction);
+    CHECK(std::fabs(w / reference.deflection - 1.0) < 0.02);
   }
   const double final_deflection = path.deflection.back();
   const double reference = semicylinder_reference().back().deflection;
