@@ -308,8 +308,7 @@ Campaign parse_campaign(const std::string& text, const std::string& path) {
 }
 
 Campaign read_campaign(const std::string& path) {
-  std::error_code error;
-  if (!fs::is_regular_file(path, error)) throw InputError(path, "no such campaign file");
+  // read_text_file names what is wrong: no such file, a directory, a file without end.
   return parse_campaign(detail::read_text_file(path), path);
 }
 

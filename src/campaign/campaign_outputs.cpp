@@ -20,6 +20,7 @@
 #include "growthuq/campaign/data_uncertainty.hpp"
 #include "campaign/raw_data_outputs.hpp"
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/printable.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
 #include "growthuq/io/results_h5.hpp"
@@ -144,7 +145,7 @@ class OutputObserver final : public RunObserver {
     // results.h5 as inf and summary.csv as an empty cell, which reads as "undefined".
     for (const QuantitySummary& summary : statistics.summaries) require_finite_statistics(summary, campaign_.campaign().path);
     progress_.line_finished();
-    for (const std::string& warning : warnings) log_ << "growthuq run: line '" << result.name << "': " << warning << "\n";
+    for (const std::string& warning : warnings) log_ << printable("growthuq run: line '" + result.name + "': " + warning) << "\n";
     summaries_.insert(summaries_.end(), statistics.summaries.begin(), statistics.summaries.end());
     line_reports_ += "\nline " + result.name + ": input rank correlation (Spearman)\n" + format_input_correlation(result) +
                      format_line_analysis(statistics.analysis);

@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/printable.hpp"
 
 namespace {
 
@@ -85,11 +86,11 @@ int main(int argc, char** argv) {
                    "command needed (fewer samples need less)\n";
       return 3;
     } catch (const std::exception& error) {
-      std::cerr << "growthuq " << name << ": internal error: " << error.what() << "\n";
+      std::cerr << "growthuq " << name << ": internal error: " << growthuq::printable(error.what()) << "\n";
       return 3;
     }
   }
-  std::cerr << "growthuq: unknown command '" << name << "'\n\n";
+  std::cerr << "growthuq: unknown command '" << growthuq::printable(name) << "'\n\n";
   print_usage(std::cerr);
   return 2;
 }

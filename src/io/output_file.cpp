@@ -1,5 +1,6 @@
 #include "growthuq/io/output_file.hpp"
 
+#include <array>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -16,10 +17,33 @@ namespace growthuq {
 namespace detail {
 
 std::string read_text_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  const auto too_large = [&] {
+    return InputError(path, "is larger than " + std::to_string(max_input_file_bytes >> 20) +
+                                " MiB, the limit of an input file: expected a text file (is it the file you meant?)");
+  };
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  // Opened, a folder reads as an I/O error deep in the stream ("basic_filebuf::underflow").
+  if (status.type() == fs::file_type::directory) throw InputError(path, "is a directory: expected a file");
+  if (status.type() == fs::file_type::regular) {
+    const std::uintmax_t bytes = fs::file_size(path, error);
+    if (!error && bytes > max_input_file_bytes) throw too_large();
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, std::string("cannot open: ") + std::strerror(errno));
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw InputError(path, "read failed");
+  // Read in blocks up to the limit: a device or a pipe without end (/dev/zero) is refused
+  // instead of filling memory.
+  std::string text;
+  std::array<char, 1 << 16> block{};
+  while (in) {
+    errno = 0;
+    in.read(block.data(), block.size());
+    const auto got = static_cast<std::size_t>(in.gcount());
+    if (text.size() + got > max_input_file_bytes) throw too_large();
+    text.append(block.data(), got);
+  }
+  if (in.bad()) throw InputError(path, std::string("read failed") + (errno != 0 ? std::string(": ") + std::strerror(errno) : ""));
   return text;
 }
 
