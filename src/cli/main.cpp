@@ -10,6 +10,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "core/interrupt.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/printable.hpp"
 
@@ -57,6 +58,8 @@ void print_usage(std::ostream& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A command killed by a signal leaves none of its partial files (core/interrupt.hpp).
+  growthuq::remove_partial_files_on_fatal_signals();
   if (argc < 2) {
     print_usage(std::cerr);
     return 2;

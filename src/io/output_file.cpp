@@ -9,6 +9,7 @@
 #include <string_view>
 #include <utility>
 
+#include "core/interrupt.hpp"
 #include "growthuq/core/error.hpp"
 #include "read_text_file.hpp"
 
@@ -125,6 +126,7 @@ void move_into_place(const std::string& partial, const std::string& path) {
 PartialFile::PartialFile(std::string path) : path_(std::move(path)), partial_(path_ + ".partial") {
   refuse_special_file(path_);
   prepare_partial_file(partial_);
+  removed_on_signal_ = std::make_unique<RemovedOnSignal>(partial_);
   out_.open(partial_, std::ios::binary | std::ios::trunc);
   if (!out_) throw InputError(partial_, std::string("cannot create: ") + std::strerror(errno));
 }

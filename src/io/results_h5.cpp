@@ -11,6 +11,7 @@
 #include <string_view>
 #include <utility>
 
+#include "core/interrupt.hpp"
 #include "growthuq/core/error.hpp"
 
 // Why no compression: sampled doubles have random mantissas. Measured on ten columns of 1e6
@@ -163,6 +164,7 @@ std::vector<std::string> status_names() {
 struct ResultsH5Writer::File {
   std::string partial;
   H5::H5File file;
+  RemovedOnSignal removed_on_signal{partial};  // a kill leaves no results.h5.partial
 };
 
 ResultsH5Writer::ResultsH5Writer(std::string path, Overwrite overwrite)
@@ -173,7 +175,7 @@ ResultsH5Writer::ResultsH5Writer(std::string path, Overwrite overwrite)
   const std::string partial = path_ + ".partial";
   prepare_partial_file(partial);
   try {
-    file_ = std::make_unique<File>(File{partial, H5::H5File(partial, H5F_ACC_TRUNC)});
+    file_ = std::make_unique<File>(partial, H5::H5File(partial, H5F_ACC_TRUNC));
     create_untimed_group(file_->file, "lines");
   } catch (const H5::Exception& error) {
     file_.reset();

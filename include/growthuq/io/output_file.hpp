@@ -5,12 +5,15 @@
 #pragma once
 
 #include <fstream>
+#include <memory>
 #include <string>
 #include <string_view>
 
 namespace growthuq {
 
 enum class Overwrite { refuse, allow };
+
+class RemovedOnSignal;  // core/interrupt.hpp
 
 // Writes `content` to `path` through "<path>.partial" and an atomic rename. With
 // Overwrite::refuse an existing `path` is an InputError that names it and suggests --force.
@@ -20,10 +23,11 @@ void write_file_atomically(const std::string& path, std::string_view content,
 
 // A file written piece by piece through "<path>.partial" and renamed into place by commit():
 // destroyed before commit() (a failure, an interruption), it removes the partial file, so no
-// half-written file looks complete. Whether an existing regular file at `path` may be replaced
-// is the caller's to check first (check_can_write); a `path` that is not a regular file is
-// refused here already (and again by commit(), in case one appeared meanwhile). I/O failures
-// are InputErrors naming the file and the reason.
+// half-written file looks complete; a signal that ends the process removes it too. Whether an
+// existing regular file at `path` may be replaced is the caller's to check first
+// (check_can_write); a `path` that is not a regular file is refused here already (and again by
+// commit(), in case one appeared meanwhile). I/O failures are InputErrors naming the file and
+// the reason.
 class PartialFile {
  public:
   explicit PartialFile(std::string path);
@@ -39,6 +43,7 @@ class PartialFile {
   std::string path_;
   std::string partial_;
   std::ofstream out_;
+  std::unique_ptr<RemovedOnSignal> removed_on_signal_;
   bool committed_ = false;
 };
 
