@@ -24,6 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::string_view location = "growthuq synth";
+constexpr std::string_view raw_ini_name = "raw.ini";
 
 // The most samples of a line's relaxation curves in their hold (about 20 bytes each in
 // relaxation_curves.csv: 40 MB); the defaults give 60000.
@@ -169,11 +170,18 @@ int run_synth(const Arguments& arguments) {
     std::error_code error;
     fs::create_directories(folder, error);
     if (error) throw InputError(folder.string(), "cannot create the folder: " + error.message());
+    // raw.ini names the other files: written together, raw.ini moved in last, so a full disk
+    // never leaves a raw.ini naming a file that is not there.
+    std::vector<FileContent> together;
     std::size_t bytes = 0;
     for (const SynthFile& file : files) {
-      write_file_atomically((folder / file.name).string(), file.text, overwrite);
+      if (file.name != raw_ini_name) together.push_back({(folder / file.name).string(), file.text});
       bytes += file.text.size();
     }
+    for (const SynthFile& file : files) {
+      if (file.name == raw_ini_name) together.push_back({(folder / file.name).string(), file.text});
+    }
+    write_files_together(together, overwrite);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - line_start).count();
     std::cout << "growthuq synth: " << truth.name << ": " << files.size() << " files, " << (bytes + 512) / 1024
               << " KiB in " << folder.string() << " (" << format_double(std::round(seconds * 100.0) / 100.0) << " s)\n";

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "core/interrupt.hpp"
 #include "growthuq/core/error.hpp"
@@ -119,7 +120,7 @@ void move_into_place(const std::string& partial, const std::string& path) {
   fs::rename(partial, path, error);
   if (error) {
     std::remove(partial.c_str());
-    throw InputError(path, "cannot move the finished file into place: " + error.message());
+    throw WriteError(path, "cannot move the finished file into place: " + error.message());
   }
 }
 
@@ -128,7 +129,7 @@ PartialFile::PartialFile(std::string path) : path_(std::move(path)), partial_(pa
   prepare_partial_file(partial_);
   removed_on_signal_ = std::make_unique<RemovedOnSignal>(partial_);
   out_.open(partial_, std::ios::binary | std::ios::trunc);
-  if (!out_) throw InputError(partial_, std::string("cannot create: ") + std::strerror(errno));
+  if (!out_) throw WriteError(partial_, std::string("cannot create: ") + std::strerror(errno));
 }
 
 PartialFile::~PartialFile() {
@@ -139,15 +140,31 @@ PartialFile::~PartialFile() {
 
 void PartialFile::write(std::string_view text) {
   out_.write(text.data(), static_cast<std::streamsize>(text.size()));
-  if (!out_) throw InputError(partial_, std::string("write failed: ") + std::strerror(errno));
+  if (!out_) throw WriteError(partial_, std::string("write failed: ") + std::strerror(errno));
+}
+
+void PartialFile::close() {
+  if (!out_.is_open()) return;
+  out_.flush();
+  out_.close();
+  if (!out_) throw WriteError(partial_, std::string("write failed: ") + std::strerror(errno));
 }
 
 void PartialFile::commit() {
-  out_.flush();
-  out_.close();
-  if (!out_) throw InputError(partial_, std::string("write failed: ") + std::strerror(errno));
+  close();
   committed_ = true;  // move_into_place removes the partial file itself when it fails
   move_into_place(partial_, path_);
+}
+
+void write_files_together(const std::vector<FileContent>& files, Overwrite overwrite) {
+  for (const FileContent& file : files) check_can_write(file.path, overwrite);
+  std::vector<std::unique_ptr<PartialFile>> written;
+  for (const FileContent& file : files) {
+    written.push_back(std::make_unique<PartialFile>(file.path));
+    written.back()->write(file.content);
+    written.back()->close();
+  }
+  for (const std::unique_ptr<PartialFile>& file : written) file->commit();
 }
 
 void write_file_atomically(const std::string& path, std::string_view content, Overwrite overwrite) {

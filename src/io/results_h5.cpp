@@ -156,7 +156,7 @@ std::vector<std::string> status_names() {
 }
 
 [[noreturn]] void rethrow_hdf5(const std::string& file, const H5::Exception& error) {
-  throw InputError(file, "HDF5 write failed in " + error.getFuncName() + ": " + error.getDetailMsg());
+  throw WriteError(file, "HDF5 write failed in " + error.getFuncName() + ": " + error.getDetailMsg());
 }
 
 }  // namespace
@@ -180,7 +180,7 @@ ResultsH5Writer::ResultsH5Writer(std::string path, Overwrite overwrite)
   } catch (const H5::Exception& error) {
     file_.reset();
     std::remove(partial.c_str());
-    throw InputError(partial, "cannot create the HDF5 file (" + error.getDetailMsg() + ")");
+    throw WriteError(partial, "cannot create the HDF5 file (" + error.getDetailMsg() + ")");
   }
 }
 

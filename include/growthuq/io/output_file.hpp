@@ -8,10 +8,21 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "growthuq/core/error.hpp"
 
 namespace growthuq {
 
 enum class Overwrite { refuse, allow };
+
+// An InputError raised because a result or a checkpoint could not be written (a full disk, a
+// quota, a file system gone read-only): nothing is wrong with the input, and what was kept
+// before (a run's checkpoint) stays valid for finishing once there is room.
+class WriteError : public InputError {
+ public:
+  using InputError::InputError;
+};
 
 class RemovedOnSignal;  // core/interrupt.hpp
 
@@ -36,7 +47,10 @@ class PartialFile {
   ~PartialFile();
 
   void write(std::string_view text);
-  // Flushes, closes and renames to the final path.
+  // Flushes and closes: InputError (WriteError) when the data did not all reach the file (a
+  // full disk shows here at the latest). Nothing is renamed yet.
+  void close();
+  // close(), then renames to the final path.
   void commit();
 
  private:
@@ -46,6 +60,17 @@ class PartialFile {
   std::unique_ptr<RemovedOnSignal> removed_on_signal_;
   bool committed_ = false;
 };
+
+struct FileContent {
+  std::string path;
+  std::string content;
+};
+
+// Files that belong together (one refers to another): every one is written in full to its
+// partial file first, and only then are they renamed into place, in the order given (a file
+// naming the others last). A failure while writing (a full disk) leaves none of them, and none
+// of the earlier ones replaced. Overwrite as write_file_atomically.
+void write_files_together(const std::vector<FileContent>& files, Overwrite overwrite);
 
 // InputError when `path` exists and overwriting was not allowed, or when it exists and is not
 // a regular file (a directory, a device, a FIFO, a socket; a symbolic link counts as what it
