@@ -182,7 +182,7 @@ std::string data_uncertainty_csv_text(std::span<const DataUncertainty> rows) {
 }
 
 std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<const QuantitySummary> summaries,
-                                   DataUncertaintyResult uncertainty, ResultsH5Writer* h5) {
+                                   DataUncertaintyResult uncertainty, ResultsH5Writer* h5, const std::string& directory) {
   const Campaign& c = campaign.campaign();
   std::string report;
   for (const PreparedLine& line : campaign.lines()) {
@@ -194,12 +194,8 @@ std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<c
     }
   }
 
-  const std::string csv_path = (std::filesystem::path(c.output_dir) / data_uncertainty_csv_name).string();
-  if (uncertainty.rows.empty()) {
-    std::error_code ignored;  // a --force rerun without the bootstrap leaves no stale file behind
-    std::filesystem::remove(csv_path, ignored);
-    return report;
-  }
+  const std::string csv_path = (std::filesystem::path(directory) / data_uncertainty_csv_name).string();
+  if (uncertainty.rows.empty()) return report;  // (the commit removes a stale one of a --force rerun)
   for (DataUncertainty& row : uncertainty.rows) {
     for (const QuantitySummary& summary : summaries) {
       if (summary.line == row.line && summary.quantity == row.quantity) {

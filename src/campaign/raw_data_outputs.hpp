@@ -40,12 +40,12 @@ namespace growthuq {
 
 inline constexpr const char* data_uncertainty_csv_name = "data_uncertainty.csv";
 
-// Writes what is above (h5 may be null: no results.h5 this run; data_uncertainty.csv goes to the
-// campaign's output directory) and returns the report text for stdout (empty without raw lines).
+// Writes what is above (h5 may be null: no results.h5 this run; data_uncertainty.csv goes to
+// `directory`, where the run stages its results) and returns the report text for stdout (empty without raw lines).
 // `summaries` are the campaign's rows of summary.csv, `uncertainty` the bootstrap's result
 // (estimate_data_uncertainty; no rows when the campaign has none).
 std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<const QuantitySummary> summaries,
-                                   DataUncertaintyResult uncertainty, ResultsH5Writer* h5);
+                                   DataUncertaintyResult uncertainty, ResultsH5Writer* h5, const std::string& directory);
 
 // The data-uncertainty rows as CSV text (the columns of /data_uncertainty above).
 std::string data_uncertainty_csv_text(std::span<const DataUncertainty> rows);

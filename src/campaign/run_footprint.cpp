@@ -111,6 +111,12 @@ std::optional<std::uint64_t> available_disk_bytes(const std::string& directory) 
   while (!fs::exists(at, error) && at.has_parent_path() && at.parent_path() != at) at = at.parent_path();
   struct statvfs space {};
   if (statvfs(at.c_str(), &space) != 0) return std::nullopt;
+  // No blocks at all: /proc, /sys and their kind keep no files, and their "0 bytes free" would
+  // read as a full disk.
+  if (space.f_blocks == 0) {
+    throw InputError(directory.empty() ? at.string() : directory,
+                     "is on a pseudo file system that stores no files (such as /proc or /sys): expected a place on a disk");
+  }
   return static_cast<std::uint64_t>(space.f_bavail) * space.f_frsize;
 }
 

@@ -61,7 +61,9 @@ RunFootprint estimate_design_footprint(std::size_t samples, std::size_t variable
 std::optional<std::uint64_t> available_memory_bytes();
 
 // Free space for an unprivileged writer on the file system that holds `directory` (or its
-// nearest existing parent), if it can be asked.
+// nearest existing parent; a file to be written there works as well), if it can be asked.
+// InputError naming `directory` when that file system stores no files at all (/proc, /sys: no
+// blocks).
 std::optional<std::uint64_t> available_disk_bytes(const std::string& directory);
 
 // What the machine offers the run: memory for `processes` processes of the run on it, disk in

@@ -1,7 +1,6 @@
 // growthuq correlate: the Spearman matrix of (k, h, d, d0) from the forward thin-shell model
 // over physically plausible (p, E, h, d0), written in the matrix CSV format that
 // `growthuq sample --rank-correlation` reads. Ranges come from flags or a config file.
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -15,6 +14,7 @@
 #include "growthuq/core/units.hpp"
 #include "growthuq/correlation/matrix_file.hpp"
 #include "growthuq/io/output_file.hpp"
+#include "io/read_text_file.hpp"
 #include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/mechanics/mechanical_correlation.hpp"
 #include "options.hpp"
@@ -59,7 +59,7 @@ class Origins {
   // default.
   long config_line(const std::string& key) const {
     if (config_.empty() || from_command_line_.count(key)) return 0;
-    std::ifstream file(config_);
+    std::istringstream file(detail::read_text_file(config_));
     std::string line;
     for (long number = 1; std::getline(file, line); ++number) {
       const std::string_view text = trim(line);
@@ -136,8 +136,7 @@ int run_correlate(const Arguments& arguments) {
     if (!value.defaulted()) from_command_line.insert(key);
   }
   if (!options.config.empty()) {
-    std::ifstream file(options.config);
-    if (!file) throw InputError(options.config, "cannot open the config file");
+    std::istringstream file(detail::read_text_file(options.config));
     try {
       po::store(po::parse_config_file(file, ranges), values);
       po::notify(values);

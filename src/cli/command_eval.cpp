@@ -163,6 +163,19 @@ std::optional<MeasuredColumn> input_column(const CsvTable& table, std::string_vi
     found = MeasuredColumn{table.numeric_column(name), &unit};
     found_name = name;
   }
+  // A column named like the quantity with a unit that is not one of its own (h_s, d_mmm) would
+  // be passed through unread, and the outputs that need it left out without a word.
+  const std::string prefix = std::string(quantity_name) + "_";
+  for (const std::string& name : table.header) {
+    if (!name.starts_with(prefix) || (found && name == found_name)) continue;
+    std::string units;
+    for (const Unit& unit : known_units()) {
+      if (unit.dimension == quantity->dimension) units += (units.empty() ? "" : ", ") + column_name(quantity_name, unit);
+    }
+    throw InputError(file_location(table.path, 0), "column '" + name + "' names " + std::string(quantity_name) +
+                                                       " with no unit of " + std::string(to_string(quantity->dimension)) +
+                                                       ": expected one of " + units + " (or rename the column)");
+  }
   return found;
 }
 

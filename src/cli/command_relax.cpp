@@ -45,7 +45,7 @@ RelaxOptions parse(const Arguments& arguments, bool& run) {
        "fit the simulated ramp and hold instead of a step at the force maximum")
       ("drop-ramp-multiple", po::value(&options.analysis.drop_ramp_multiple)->default_value(0.0),
        "step fit: leave out hold samples with t < this x ramp time")
-      ("rho-um", po::value(&rho_um), "probe radius (um) for curves without a rho_um column")
+      ("rho-um", po::value(&rho_um), "probe radius (um) of every curve; a rho_um column, if any, must agree")
       ("nu", po::value(&nu)->default_value(nu), "Poisson ratio of the wall")
       ("fit-distributions", po::value(&options.distributions_out),
        "write lognormal [tau] and [einf] line-file sections fitted to the ok curves")

@@ -19,6 +19,7 @@
 #include "campaign/progress.hpp"
 #include "campaign/run_footprint.hpp"
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/printable.hpp"
 #include "core/interrupt.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/pool/pool.hpp"
@@ -91,10 +92,11 @@ void check_resume_options(const RunOptions& options, const po::variables_map& va
 void warn_if_campaign_file_differs(const CheckpointManifest& manifest, const std::string& manifest_path) {
   const CampaignFileNow now = campaign_file_now(manifest);
   if (now == CampaignFileNow::unchanged) return;
-  std::cerr << "growthuq run: warning: " << locate(manifest, manifest.campaign_path)
-            << (now == CampaignFileNow::changed ? " changed since the run started" : " cannot be read now")
-            << "; resuming with the campaign text stored in " << manifest_path
-            << " (to run the file as it is now, start the run again with --force)\n";
+  std::cerr << printable("growthuq run: warning: " + locate(manifest, manifest.campaign_path) +
+                         (now == CampaignFileNow::changed ? " changed since the run started" : " cannot be read now") +
+                         "; resuming with the campaign text stored in " + manifest_path +
+                         " (to run the file as it is now, start the run again with --force)")
+            << "\n";
 }
 
 // The checkpoint's campaign, after rank 0 has checked that nothing it read has changed.
@@ -155,7 +157,7 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
   try {
     outcome = run_campaign_with_outputs(*prepared, pool, settings, std::cout, std::cerr);
   } catch (const RunInterrupted& interrupted) {
-    if (pool.is_coordinator()) std::cerr << "growthuq run: " << interrupted.what() << "\n";
+    if (pool.is_coordinator()) std::cerr << "growthuq run: " << printable(interrupted.what()) << "\n";
     return exit_status_of_signal(interrupted.reason());
   }
   if (std::getenv("GROWTHUQ_TIMINGS") != nullptr) {

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -14,6 +13,7 @@
 #include "commands.hpp"
 #include "campaign/run_footprint.hpp"
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/printable.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
 #include "growthuq/correlation/matrix_file.hpp"
@@ -26,8 +26,6 @@
 #include "options.hpp"
 
 namespace growthuq::cli {
-
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -165,12 +163,12 @@ int run_sample(const Arguments& arguments) {
   const LineDistributions line = read_line_file(options.line_file);
   // A design this machine cannot hold is refused now rather than killed part way (run_footprint.hpp).
   require_room(estimate_design_footprint(sampling.samples, line.variables.size()),
-               machine_room(1, fs::path(options.out).parent_path().string()), "growthuq sample", "--samples");
+               machine_room(1, options.out), "growthuq sample", "--samples");
   std::optional<RankCorrelationFile> correlation;
   if (!options.rank_correlation_file.empty()) correlation = read_rank_correlation_csv(options.rank_correlation_file);
 
   const LineDesign design = sample_line(line, sampling, correlation ? &*correlation : nullptr);
-  for (const std::string& warning : design.warnings) std::cerr << "growthuq sample: " << warning << "\n";
+  for (const std::string& warning : design.warnings) std::cerr << "growthuq sample: " << printable(warning) << "\n";
   write_design_csv(options.out, line, design);
 
   std::cout << "line '" << line.name << "' (" << line.path << "): " << sampling.samples << " samples, seed "

@@ -10,7 +10,9 @@
 #include <string>
 
 #include "commands.hpp"
+#include "core/interrupt.hpp"
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/printable.hpp"
 
 namespace {
 
@@ -56,6 +58,8 @@ void print_usage(std::ostream& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A command killed by a signal leaves none of its partial files (core/interrupt.hpp).
+  growthuq::remove_partial_files_on_fatal_signals();
   if (argc < 2) {
     print_usage(std::cerr);
     return 2;
@@ -85,11 +89,11 @@ int main(int argc, char** argv) {
                    "command needed (fewer samples need less)\n";
       return 3;
     } catch (const std::exception& error) {
-      std::cerr << "growthuq " << name << ": internal error: " << error.what() << "\n";
+      std::cerr << "growthuq " << name << ": internal error: " << growthuq::printable(error.what()) << "\n";
       return 3;
     }
   }
-  std::cerr << "growthuq: unknown command '" << name << "'\n\n";
+  std::cerr << "growthuq: unknown command '" << growthuq::printable(name) << "'\n\n";
   print_usage(std::cerr);
   return 2;
 }

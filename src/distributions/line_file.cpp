@@ -191,6 +191,15 @@ LineVariable read_variable(const IniDocument& document, const IniSection& sectio
                                            std::string(unit.symbol) + ": " + *problem + ": expected " +
                                            sampled_range_expectation + ", in the file's unit and in SI units");
   }
+  // Every measured variable is a positive quantity. A law whose median is not positive draws
+  // mostly impossible values (flagged, left out of the statistics): the few left would pass for
+  // the line's.
+  if (const double median = quantile(distribution, 0.5); !(median > 0.0)) {
+    throw InputError(section_location, "[" + section.name + "] law " + describe(distribution) + " in " +
+                                           std::string(unit.symbol) + ": its median " + format_double(median) +
+                                           " is not positive: expected a law of positive values for " + section.name +
+                                           ", the " + std::string(quantity.description));
+  }
   return LineVariable{section.name, &unit, std::move(distribution), source, note ? note->value : std::string(),
                       section.line};
 }

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <utility>
 
+#include "core/interrupt.hpp"
 #include "growthuq/core/error.hpp"
 
 // Why no compression: sampled doubles have random mantissas. Measured on ten columns of 1e6
@@ -155,7 +156,7 @@ std::vector<std::string> status_names() {
 }
 
 [[noreturn]] void rethrow_hdf5(const std::string& file, const H5::Exception& error) {
-  throw InputError(file, "HDF5 write failed in " + error.getFuncName() + ": " + error.getDetailMsg());
+  throw WriteError(file, "HDF5 write failed in " + error.getFuncName() + ": " + error.getDetailMsg());
 }
 
 }  // namespace
@@ -163,6 +164,7 @@ std::vector<std::string> status_names() {
 struct ResultsH5Writer::File {
   std::string partial;
   H5::H5File file;
+  RemovedOnSignal removed_on_signal{partial};  // a kill leaves no results.h5.partial
 };
 
 ResultsH5Writer::ResultsH5Writer(std::string path, Overwrite overwrite)
@@ -173,12 +175,12 @@ ResultsH5Writer::ResultsH5Writer(std::string path, Overwrite overwrite)
   const std::string partial = path_ + ".partial";
   prepare_partial_file(partial);
   try {
-    file_ = std::make_unique<File>(File{partial, H5::H5File(partial, H5F_ACC_TRUNC)});
+    file_ = std::make_unique<File>(partial, H5::H5File(partial, H5F_ACC_TRUNC));
     create_untimed_group(file_->file, "lines");
   } catch (const H5::Exception& error) {
     file_.reset();
     std::remove(partial.c_str());
-    throw InputError(partial, "cannot create the HDF5 file (" + error.getDetailMsg() + ")");
+    throw WriteError(partial, "cannot create the HDF5 file (" + error.getDetailMsg() + ")");
   }
 }
 

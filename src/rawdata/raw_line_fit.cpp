@@ -1,5 +1,6 @@
 #include "growthuq/rawdata/raw_line_fit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -14,6 +15,27 @@
 namespace growthuq {
 namespace {
 
+// A value more than this factor from its column's median is no tube of the line: tubes of one
+// line differ by a factor of a few (the shipped data by less than 10), a typo (1e300 for 3.0, a
+// value in another unit) by far more. One such value would stretch every fitted law and move
+// the line's results (a median turgor of 6e4 MPa) without a word.
+constexpr double gross_outlier_factor = 1000.0;
+
+void refuse_gross_outliers(const CsvTable& table, const std::string& column, const std::vector<double>& values,
+                           const std::vector<std::size_t>& rows) {
+  if (values.empty()) return;
+  std::vector<double> sorted = values;
+  std::sort(sorted.begin(), sorted.end());
+  const std::size_t n = sorted.size();
+  const double median = n % 2 == 1 ? sorted[n / 2] : sorted[n / 2 - 1] + 0.5 * (sorted[n / 2] - sorted[n / 2 - 1]);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (values[i] <= median * gross_outlier_factor && values[i] >= median / gross_outlier_factor) continue;
+    throw_bad_value(table.row_location(rows[i]), column, table.rows[rows[i]][table.column_index(column)],
+                    "a value within a factor " + format_double(gross_outlier_factor) + " of the column's median " +
+                        format_double(median) + " (a typo, or a value in another unit?)");
+  }
+}
+
 // The values of one column, in its unit. Blank cells are tubes where the quantity was not
 // measured; anything else must be a number of the quantity's physical range.
 std::vector<double> read_measurement_column(const RawMeasurement& measurement) {
@@ -21,6 +43,7 @@ std::vector<double> read_measurement_column(const RawMeasurement& measurement) {
   const std::size_t column = table.column_index(measurement.column);
   const bool fraction = measurement.variable == "einf";
   std::vector<double> values;
+  std::vector<std::size_t> rows;
   for (std::size_t row = 0; row < table.rows.size(); ++row) {
     const std::string& cell = table.rows[row][column];
     if (cell.empty()) continue;
@@ -32,7 +55,9 @@ std::vector<double> read_measurement_column(const RawMeasurement& measurement) {
                                : "a positive " + std::string(find_quantity(measurement.variable)->description));
     }
     values.push_back(value);
+    rows.push_back(row);
   }
+  if (!fraction) refuse_gross_outliers(table, measurement.column, values, rows);
   return values;
 }
 

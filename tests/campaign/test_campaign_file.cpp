@@ -146,3 +146,32 @@ TEST_CASE("a line comes from exactly one of a line file and raw data; the data b
   CHECK(error_of(raw + "[data_uncertainty]\nreplicates = 10\nsamples = 5\n") ==
         file + ":20: samples = '5': expected a whole number from 10 to 10000000");
 }
+
+TEST_CASE("a list item given twice and an empty required value are errors, not silently doubled or empty") {
+  const CampaignFolder folder;
+  const std::string file = folder.path();
+  auto error_of = [&](const std::string& text) -> std::string {
+    try {
+      parse_campaign(text, file);
+    } catch (const InputError& error) {
+      return error.what();
+    }
+    return "no error";
+  };
+  // outputs = p, p would give two summary rows of p.
+  CHECK(error_of(replaced(valid, "outputs = p, E, eta, v", "outputs = p, E, p")) ==
+        file + ":5: outputs = 'p, E, p': expected each item once ('p' is listed twice)");
+  CHECK(error_of(replaced(valid, "output_dir = out/test", "output_dir = out/test\nformats = csv, csv")) ==
+        file + ":7: formats = 'csv, csv': expected each item once ('csv' is listed twice)");
+  // name = (empty) made a nameless campaign, output_dir = (empty) the current folder.
+  CHECK(error_of(replaced(valid, "name = test", "name =")) == file + ":2: name = '': expected a value (it is required)");
+  CHECK(error_of(replaced(valid, "output_dir = out/test", "output_dir = ")) ==
+        file + ":6: output_dir = '': expected a value (it is required)");
+  // --lines wt,wt ran the line twice into the same files.
+  Campaign campaign = parse_campaign(valid, file);
+  CHECK_THROWS_WITH_AS(apply_overrides(campaign, {.lines = "wt, m1,wt"}),
+                       "command line: --lines = 'wt, m1,wt': expected each item once ('wt' is listed twice)", InputError);
+  // The same list without the repeat is taken as given.
+  apply_overrides(campaign, {.lines = "wt, m1"});
+  CHECK(campaign.lines.size() == 2);
+}

@@ -198,3 +198,19 @@ TEST_CASE("sampled_range_problem: the ends of the drawn range, in the law's unit
   CHECK(highest_drawn_probability == std::nextafter(1.0, 0.0));
   CHECK(lowest_drawn_probability <= 0x1.0p-54 / 4294967295.0);
 }
+
+TEST_CASE("a law whose median is not positive is refused: most of its draws are impossible values") {
+  // Every measured variable is positive; k = normal(-3, 1) draws no positive stiffness at all.
+  const std::string none = error_of("[k]\nlaw = normal\nmean = -3\nsd = 1\nunit = N/m\nsource = table\n");
+  CAPTURE(none);
+  CHECK(none.rfind(":3: [k] law ", 0) == 0);
+  CHECK(none.find(" in N/m: its median -3 is not positive: expected a law of positive values for k, the apparent "
+                  "stiffness") != std::string::npos);
+  CHECK(error_of("[d]\nlaw = uniform\nlower = -8\nupper = 0\nunit = um\nsource = table\n").find("its median -4 is not positive") !=
+        std::string::npos);
+  // Median exactly 0: half the draws impossible.
+  CHECK(error_of("[h]\nlaw = normal\nmean = 0\nsd = 10\nunit = nm\nsource = table\n").find("its median 0 is not positive") !=
+        std::string::npos);
+  // A positive median with a tail below 0 (2 % here) stays accepted: those samples are flagged.
+  CHECK(error_of("[k]\nlaw = normal\nmean = 2\nsd = 1\nunit = N/m\nsource = table\n") == "no error");
+}

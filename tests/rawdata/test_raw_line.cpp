@@ -235,3 +235,17 @@ TEST_CASE("fit_variable_by_aic: a fitted law that would draw inf or 0 is a faile
                                               {std::begin(all_fit_families), std::end(all_fit_families)}, "test", "test");
   CHECK(fit.candidates[fit.chosen].result.has_value());
 }
+
+TEST_CASE("raw line fit: a value more than a factor 1000 from its column's median is named as a likely typo") {
+  Folder folder;
+  // One stiffness typed 1e300 for 3.0: it gave a median turgor of 6e4 MPa without a word.
+  const std::string typo = fit_error_of(folder, "tube,k_N_per_m\nA,2.5\nB,1e300\nC,3.0\nD,2.8\n");
+  CHECK(typo.find("t.csv:3: k_N_per_m = '1e300': expected a value within a factor 1000 of the column's median 2.9 "
+                  "(a typo, or a value in another unit?)") != std::string::npos);
+  // Too small as well (a value in mN/m among N/m): median of 2.5, 3.0, 0.002, 2.8 is 2.65.
+  CHECK(fit_error_of(folder, "tube,k_N_per_m\nA,2.5\nB,3.0\nC,0.002\nD,2.8\n")
+            .find("t.csv:4: k_N_per_m = '0.002': expected a value within a factor 1000 of the column's median 2.65") !=
+        std::string::npos);
+  // A spread of a factor 100 is data, not a typo.
+  CHECK(fit_error_of(folder, "tube,k_N_per_m\nA,0.1\nB,3.0\nC,10\nD,2.8\n").find("within a factor") == std::string::npos);
+}

@@ -66,7 +66,8 @@ class Pool {
   // Runs `work` over [0, count) in chunks of `chunk_size`, handed out dynamically so that
   // slow chunks balance; `skip(range)` (optional) tells chunks already done (resume). Every
   // process must call run() with the same count, chunk_size and skip; `sink` is called only
-  // on rank 0. Returns when every chunk has been sunk; throws PoolError if a chunk failed.
+  // on rank 0. Returns when every chunk has been sunk; throws PoolError if a chunk failed (what
+  // the sink threw, on rank 0 the exception itself, elsewhere a PoolError).
   virtual void run(std::size_t count, std::size_t chunk_size, const ChunkWork& work,
                    const ChunkSink& sink,
                    const std::function<bool(ChunkRange)>& skip = nullptr) = 0;
@@ -102,7 +103,8 @@ class Pool {
     broadcast_bytes(std::as_writable_bytes(std::span(values.data(), size)), root);
   }
 
- protected:
+  // The stop request's value now (0: none); meaningful on the coordinator, whose request
+  // decides. Also for work after run() (a campaign's final writes).
   int stop_requested() const { return stop_request_ ? stop_request_() : 0; }
 
  private:
