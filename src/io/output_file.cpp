@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <string_view>
 #include <utility>
 
@@ -16,6 +17,11 @@ namespace growthuq {
 namespace detail {
 
 std::string read_text_file(const std::string& path) {
+  if (path == standard_input) {
+    std::string text((std::istreambuf_iterator<char>(std::cin)), std::istreambuf_iterator<char>());
+    if (std::cin.bad()) throw InputError(source_name(path), "read failed");
+    return text;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, std::string("cannot open: ") + std::strerror(errno));
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -60,6 +66,11 @@ void refuse_special_file(const std::string& path) {
 }  // namespace
 
 void check_can_write(const std::string& path, Overwrite overwrite) {
+  // The commands that can print a result on stdout check "-" themselves (cli/result_output.hpp);
+  // one reaching here would otherwise become a file called "-".
+  if (path == "-") {
+    throw InputError(path, "standard output cannot take this result: expected a file name (./- for a file named -)");
+  }
   refuse_special_file(path);
   std::error_code error;
   if (overwrite == Overwrite::refuse && fs::exists(path, error)) {
