@@ -53,22 +53,10 @@ std::string shell_word(const std::string& path) {
 
 // Returns whether the directory was created by this run.
 bool prepare_output_directory(const Campaign& campaign, Overwrite overwrite) {
+  check_output_directory(campaign, overwrite);
   const std::string& directory = campaign.output_dir;
   std::error_code error;
   if (fs::exists(directory, error)) {
-    if (overwrite == Overwrite::refuse && has_checkpoint(directory)) {
-      throw InputError(directory, "holds an interrupted run; finish it with: growthuq run --resume " + shell_word(directory) +
-                                      " (or pass --force to start it again)");
-    }
-    if (overwrite == Overwrite::refuse) {
-      throw InputError(directory, "output directory already exists; choose another (--out DIR) or pass --force to replace its results");
-    }
-    if (!fs::is_directory(directory, error)) throw InputError(directory, "exists and is not a directory");
-    // Every file a run writes or removes there is a regular file or absent, so neither the
-    // writers nor the removals below touch a device, FIFO or folder of that name.
-    for (const char* name : {samples_csv_name, summary_csv_name, results_h5_name, data_uncertainty_csv_name}) {
-      check_can_write(in_directory(directory, name), Overwrite::allow);
-    }
     if (!campaign.formats.csv) fs::remove(in_directory(directory, samples_csv_name), error);
     if (!campaign.formats.hdf5) fs::remove(in_directory(directory, results_h5_name), error);
     return false;
@@ -186,7 +174,11 @@ class OutputObserver final : public RunObserver {
              << ": its predicted median v equals the median of its v_exp, "
              << format_significant(to_um_per_s(campaign_.experimental_median_growth_rate())) << " um/s)\n";
     }
-    report << line_reports_ << raw_data_report;
+    if (settings.line_reports) {
+      report << line_reports_ << raw_data_report;
+    } else {
+      report << "\n(per-line reports not printed: --summary-only)\n";
+    }
   }
 
   const std::vector<QuantitySummary>& summaries() const { return summaries_; }
@@ -218,6 +210,29 @@ class OutputObserver final : public RunObserver {
 };
 
 }  // namespace
+
+void check_output_directory(const Campaign& campaign, Overwrite overwrite) {
+  const std::string& directory = campaign.output_dir;
+  if (directory == "-") {
+    throw InputError(directory, "standard output cannot take a campaign's results (a folder of files): expected a "
+                                "directory name (./- for one named -)");
+  }
+  std::error_code error;
+  if (!fs::exists(directory, error)) return;
+  if (overwrite == Overwrite::refuse && has_checkpoint(directory)) {
+    throw InputError(directory, "holds an interrupted run; finish it with: growthuq run --resume " + shell_word(directory) +
+                                    " (or pass --force to start it again)");
+  }
+  if (overwrite == Overwrite::refuse) {
+    throw InputError(directory, "output directory already exists; choose another (--out DIR) or pass --force to replace its results");
+  }
+  if (!fs::is_directory(directory, error)) throw InputError(directory, "exists and is not a directory");
+  // Every file a run writes or removes there is a regular file or absent, so neither the
+  // writers nor the removals that follow touch a device, FIFO or folder of that name.
+  for (const char* name : {samples_csv_name, summary_csv_name, results_h5_name, data_uncertainty_csv_name}) {
+    check_can_write(in_directory(directory, name), Overwrite::allow);
+  }
+}
 
 CampaignOutcome run_campaign_with_outputs(const PreparedCampaign& campaign, Pool& pool, const OutputSettings& settings,
                                           std::ostream& report, std::ostream& log) {
