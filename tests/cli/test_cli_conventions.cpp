@@ -65,6 +65,14 @@ TEST_CASE("--out - prints the result alone on stdout, as the file would hold it;
     CHECK(to_stdout.err.find("wrote the result to standard output") != std::string::npos);
     CHECK_FALSE(fs::exists(scratch.root / "-"));
   }
+  // relax: the fits table on stdout, the per-curve report on stderr.
+  const std::string raw = std::string(GROWTHUQ_SOURCE_DIR) + "/distributions/example_raw/wild_type";
+  const std::string relax = "relax " + raw + "/relaxation_curves.csv --meta " + raw + "/relaxation_meta.csv --out ";
+  REQUIRE(run_cli(relax + "fits.csv", scratch.root).exit_code == 0);
+  const CliOutcome relax_stdout = run_cli(relax + "-", scratch.root);
+  CHECK(relax_stdout.exit_code == 0);
+  CHECK(relax_stdout.out == slurp(scratch.root / "fits.csv"));
+  CHECK(relax_stdout.err.find("fits in standard output\n") != std::string::npos);
   // fit --write -: the line file on stdout (named "fitted": there is no file name to take), the
   // AIC table on stderr.
   const CliOutcome fit = run_cli("fit k.csv --column k_N_per_m --write -", scratch.root);
