@@ -109,18 +109,19 @@ void print_table(const std::vector<FitResult>& fits, std::ostream& report) {
   }
 }
 
-std::string line_file_text(const FitOptions& options, const Target& target, const FitResult& fit) {
+// `data` names the table as messages do ("standard input" for -).
+std::string line_file_text(const FitOptions& options, const std::string& data, const Target& target, const FitResult& fit) {
   // A line file printed on stdout has no file name to name its line after.
   const std::string stem = is_standard_output(options.write) ? "" : std::filesystem::path(options.write).stem().string();
   LineVariable variable{target.variable, target.unit, fit.distribution,
-                        "maximum-likelihood " + std::string(to_string(fit.family)) + " fit to " + options.data +
+                        "maximum-likelihood " + std::string(to_string(fit.family)) + " fit to " + data +
                             ", column " + options.column + " (n = " + std::to_string(fit.sample_size) +
                             ", AIC " + number(fit.aic) + ", KS D " + number(fit.ks_statistic) + ")",
                         "", 0};
   return "# Written by growthuq fit. Merge the variable section into a plant line's file, or use\n"
          "# this file as it is (it is a complete line file).\n[line]\nname = " +
-         (stem.empty() ? std::string("fitted") : stem) + "\ndescription = " + target.variable + " fitted from " +
-         options.data + "\n\n" + format_line_variable(variable);
+         (stem.empty() ? std::string("fitted") : stem) + "\ndescription = " + target.variable + " fitted from " + data +
+         "\n\n" + format_line_variable(variable);
 }
 
 }  // namespace
@@ -209,7 +210,7 @@ int run_fit(const Arguments& arguments) {
               << "\n";
   }
   if (!options.write.empty()) {
-    write_result(options.write, line_file_text(options, target, fits.front()),
+    write_result(options.write, line_file_text(options, table.path, target, fits.front()),
                  options.force ? Overwrite::allow : Overwrite::refuse);
     report << "\nwrote " << to_string(fits.front().family) << " law of " << target.variable << " to "
            << (is_standard_output(options.write) ? "standard output" : options.write) << "\n";

@@ -102,6 +102,10 @@ TEST_CASE("- as an input reads standard input; commands that cannot print a resu
   const CliOutcome fit_stdin = run_cli("fit - --column k_N_per_m <k.csv", scratch.root);
   CHECK(fit_stdin.exit_code == 0);
   CHECK(fit_stdin.out.substr(fit_stdin.out.find('\n')) == fit_file.out.substr(fit_file.out.find('\n')));
+  // Both ends piped: the line file it writes names where the data came from.
+  const CliOutcome fit_pipe = run_cli("fit - --column k_N_per_m --write - <k.csv", scratch.root);
+  CHECK(fit_pipe.exit_code == 0);
+  CHECK(fit_pipe.out.find("description = k fitted from standard input\n") != std::string::npos);
 
   // Results that are folders or several files cannot go to stdout: - is refused in one line
   // before any work, and no file or folder "-" appears.
