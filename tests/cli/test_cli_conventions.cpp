@@ -111,6 +111,7 @@ TEST_CASE("- as an input reads standard input; commands that cannot print a resu
   // before any work, and no file or folder "-" appears.
   const std::string small = std::string(GROWTHUQ_SOURCE_DIR) + "/tests/campaign/data/small_campaign.ini";
   for (const std::string& command : {"run " + small + " --out -", "tradeoff " + small + " --samples-list 20,40 --out -",
+                                    "synth " + std::string(GROWTHUQ_SOURCE_DIR) + "/distributions/wild_type.ini --out -",
                                     std::string("indent --p-MPa 0.3 --E-MPa 100 --h-nm 150 --d0-um 5 --rho-um 0.5 --out -")}) {
     CAPTURE(command);
     const CliOutcome refused = run_cli(command, scratch.root);
