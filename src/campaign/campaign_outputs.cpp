@@ -67,22 +67,11 @@ std::string staging_directory(const std::string& output_dir) { return in_directo
 bool prepare_output_directory(const Campaign& campaign, Overwrite overwrite, std::optional<OutputDirectoryLock>& lock) {
   const std::string& directory = campaign.output_dir;
   std::error_code error;
+  // Locked before anything is said about what it holds: the checkpoint of a live run is no
+  // interrupted run to resume.
+  if (directory != "-" && fs::is_directory(directory, error)) lock.emplace(directory);
+  check_output_directory(campaign, overwrite);
   if (fs::exists(directory, error)) {
-    const bool is_directory = fs::is_directory(directory, error);
-    // Locked before anything is said about what it holds: the checkpoint of a live run is no
-    // interrupted run to resume.
-    if (is_directory) lock.emplace(directory);
-    if (overwrite == Overwrite::refuse && has_checkpoint(directory)) {
-      throw InputError(directory, "holds an interrupted run; finish it with: growthuq run --resume " + shell_word(directory) +
-                                      " (or pass --force to start it again)");
-    }
-    if (overwrite == Overwrite::refuse) {
-      throw InputError(directory, "output directory already exists; choose another (--out DIR) or pass --force to replace its results");
-    }
-    if (!is_directory) throw InputError(directory, "exists and is not a directory");
-    // Every file a run writes or removes there is a regular file or absent, so neither the
-    // writers nor the commit's removals touch a device, FIFO or folder of that name.
-    for (const char* name : result_names) check_can_write(in_directory(directory, name), Overwrite::allow);
     fs::remove_all(staging_directory(directory), error);  // what a killed run had staged
     return false;
   }
@@ -231,7 +220,11 @@ class OutputObserver final : public RunObserver {
              << ": its predicted median v equals the median of its v_exp, "
              << format_significant(to_um_per_s(campaign_.experimental_median_growth_rate())) << " um/s)\n";
     }
-    report << line_reports_ << raw_data_report;
+    if (settings.line_reports) {
+      report << line_reports_ << raw_data_report;
+    } else {
+      report << "\n(per-line reports not printed: --summary-only)\n";
+    }
     return report.str();
   }
 
@@ -279,6 +272,27 @@ class OutputObserver final : public RunObserver {
 }
 
 }  // namespace
+
+void check_output_directory(const Campaign& campaign, Overwrite overwrite) {
+  const std::string& directory = campaign.output_dir;
+  if (directory == "-") {
+    throw InputError(directory, "standard output cannot take a campaign's results (a folder of files): expected a "
+                                "directory name (./- for one named -)");
+  }
+  std::error_code error;
+  if (!fs::exists(directory, error)) return;
+  if (overwrite == Overwrite::refuse && has_checkpoint(directory)) {
+    throw InputError(directory, "holds an interrupted run; finish it with: growthuq run --resume " + shell_word(directory) +
+                                    " (or pass --force to start it again)");
+  }
+  if (overwrite == Overwrite::refuse) {
+    throw InputError(directory, "output directory already exists; choose another (--out DIR) or pass --force to replace its results");
+  }
+  if (!fs::is_directory(directory, error)) throw InputError(directory, "exists and is not a directory");
+  // Every file a run writes or removes there is a regular file or absent, so neither the
+  // writers nor the commit's removals touch a device, FIFO or folder of that name.
+  for (const char* name : result_names) check_can_write(in_directory(directory, name), Overwrite::allow);
+}
 
 CampaignOutcome run_campaign_with_outputs(const PreparedCampaign& campaign, Pool& pool, const OutputSettings& settings,
                                           std::ostream& report, std::ostream& log) {

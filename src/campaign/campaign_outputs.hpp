@@ -28,6 +28,7 @@ enum class Checkpointing {
 struct OutputSettings {
   Overwrite overwrite = Overwrite::refuse;  // allow: reuse an existing output directory (--force)
   ProgressMode progress = ProgressMode::none;
+  bool line_reports = true;                 // false: the report ends after the summary table and kappa (--summary-only)
   std::string command_line;                 // stored in results.h5 (when resuming: the original one)
   Checkpointing checkpointing = Checkpointing::off;
   CheckpointManifest manifest;              // with Checkpointing::start (the coordinator writes it)
@@ -57,6 +58,13 @@ inline constexpr const char* summary_csv_name = "summary.csv";
 inline constexpr const char* results_h5_name = "results.h5";
 // The folder in the output directory where a run writes its results until all are complete.
 inline constexpr const char* staging_name = "staging";
+
+// What a run checks of campaign.output_dir before it creates it or writes there, without
+// touching it (`growthuq check`): InputError naming it when it exists and overwrite is refuse
+// (suggesting --resume when it holds an interrupted run), when it exists and is no directory,
+// when a result file there would replace something that is not a regular file, or when it is
+// "-" (standard output, which other commands take for a result file).
+void check_output_directory(const Campaign& campaign, Overwrite overwrite);
 
 // Every process calls it. Rank 0 creates campaign.output_dir if needed, locks it for the whole
 // run (output_lock.hpp: a second live run is refused naming this one) and checks it before any

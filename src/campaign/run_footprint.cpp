@@ -24,13 +24,6 @@ std::uint64_t line_bytes_per_sample(const RunShape& shape) {
   return 12 * shape.largest_inputs + 8 * shape.largest_outputs + 1;
 }
 
-// "44.9 GB"
-std::string gigabytes(std::uint64_t bytes) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
-  return text;
-}
-
 // The largest samples per line whose estimate stays within `budget`, rounded down to two
 // significant digits (a count to type, not to the sample; 0 when none fits).
 std::uint64_t largest_fitting(std::uint64_t budget, std::uint64_t fixed, std::uint64_t per_sample) {
@@ -41,7 +34,21 @@ std::uint64_t largest_fitting(std::uint64_t budget, std::uint64_t fixed, std::ui
   return exact / step * step;
 }
 
+// "44.9 GB"
+std::string gigabytes(std::uint64_t bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
+  return text;
+}
+
 }  // namespace
+
+std::string readable_size(std::uint64_t bytes) {
+  if (bytes >= 1'000'000'000) return gigabytes(bytes);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f MB", static_cast<double>(bytes) / 1e6);
+  return text;
+}
 
 RunShape run_shape(const PreparedCampaign& campaign, bool checkpoint) {
   RunShape shape;

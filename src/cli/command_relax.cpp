@@ -17,6 +17,7 @@
 #include "growthuq/relaxation/analysis.hpp"
 #include "growthuq/relaxation/curves.hpp"
 #include "options.hpp"
+#include "result_output.hpp"
 
 namespace growthuq::cli {
 namespace {
@@ -39,7 +40,8 @@ RelaxOptions parse(const Arguments& arguments, bool& run) {
       ("curves", po::value(&options.curves)->required(), "force curves: CSV curve,t_s,F_uN")
       ("meta", po::value(&options.meta), "per-curve metadata: CSV curve,delta_um,p_MPa,d_um,h_nm[,rho_um] "
                                          "(default: the same columns in the curves file)")
-      ("out", po::value(&options.out)->required(), "fits, one row per curve (CSV)")
+      ("out", po::value(&options.out)->required(), "fits, one row per curve (CSV); - writes them to standard output "
+                                                   "(the report then goes to standard error)")
       ("terms", po::value(&options.analysis.terms)->default_value(2), "exponentials in the Prony series: 1, 2 or 3")
       ("ramp-aware", po::bool_switch(&options.analysis.ramp_aware),
        "fit the simulated ramp and hold instead of a step at the force maximum")
@@ -48,7 +50,7 @@ RelaxOptions parse(const Arguments& arguments, bool& run) {
       ("rho-um", po::value(&rho_um), "probe radius (um) of every curve; a rho_um column, if any, must agree")
       ("nu", po::value(&nu)->default_value(nu), "Poisson ratio of the wall")
       ("fit-distributions", po::value(&options.distributions_out),
-       "write lognormal [tau] and [einf] line-file sections fitted to the ok curves")
+       "write lognormal [tau] and [einf] line-file sections fitted to the ok curves (- for standard output)")
       ("force", "overwrite existing outputs");
   po::positional_options_description positional;
   positional.add("curves", 1);
@@ -130,22 +132,22 @@ std::string distributions_text(const std::vector<CurveFit>& fits, const std::str
          lognormal_section("tau", "s", tau, source) + "\n" + lognormal_section("einf", "frac", einf, source);
 }
 
-void print_summary(const std::vector<CurveFit>& fits, const RelaxOptions& options) {
-  std::cout << "growthuq relax: " << fits.size() << " curve(s) from " << options.curves << ", "
+void print_summary(const std::vector<CurveFit>& fits, const RelaxOptions& options, std::ostream& report) {
+  report << "growthuq relax: " << fits.size() << " curve(s) from " << options.curves << ", "
             << options.analysis.terms << "-term " << (options.analysis.ramp_aware ? "ramp-aware" : "step") << " fit\n";
   std::size_t ok = 0;
   for (const CurveFit& fit : fits) {
-    std::cout << "  " << fit.curve << ": ";
+    report << "  " << fit.curve << ": ";
     if (fit.ok) {
       ++ok;
-      std::cout << "tau_slow " << format_double(std::round(fit.tau.back() * 1e3) / 1e3) << " s, E_inf/E_r(0) "
+      report << "tau_slow " << format_double(std::round(fit.tau.back() * 1e3) / 1e3) << " s, E_inf/E_r(0) "
                 << format_double(std::round(fit.einf * 1e3) / 1e3) << ", eta "
                 << format_double(std::round(to_MPa_s(fit.viscosity) * 10) / 10) << " MPa s\n";
     } else {
-      std::cout << "fit_failed: " << fit.reason << "\n";
+      report << "fit_failed: " << fit.reason << "\n";
     }
   }
-  std::cout << ok << " ok, " << fits.size() - ok << " failed; fits in " << options.out << "\n";
+  report << ok << " ok, " << fits.size() - ok << " failed; fits in " << (is_standard_output(options.out) ? "standard output" : options.out) << "\n";
 }
 
 }  // namespace
@@ -154,8 +156,11 @@ int run_relax(const Arguments& arguments) {
   bool run = true;
   const RelaxOptions options = parse(arguments, run);
   if (!run) return 0;
-  check_can_write(options.out, options.overwrite);
-  if (!options.distributions_out.empty()) check_can_write(options.distributions_out, options.overwrite);
+  if (is_standard_output(options.out) && is_standard_output(options.distributions_out)) {
+    throw InputError("growthuq relax", "--out and --fit-distributions are both -: standard output takes one result");
+  }
+  check_result_target(options.out, options.overwrite);
+  if (!options.distributions_out.empty()) check_result_target(options.distributions_out, options.overwrite);
 
   const std::vector<RelaxationCurve> curves = read_relaxation_curves(options.curves, options.meta, given_probe_radius_m(options.instrument));
   std::vector<CurveFit> fits;
@@ -163,11 +168,10 @@ int run_relax(const Arguments& arguments) {
 
   const std::string distributions =
       options.distributions_out.empty() ? std::string() : distributions_text(fits, options.curves);
-  write_file_atomically(options.out, fits_csv(fits, options.analysis.terms), options.overwrite);
-  if (!options.distributions_out.empty()) {
-    write_file_atomically(options.distributions_out, distributions, options.overwrite);
-  }
-  print_summary(fits, options);
+  write_result(options.out, fits_csv(fits, options.analysis.terms), options.overwrite);
+  if (!options.distributions_out.empty()) write_result(options.distributions_out, distributions, options.overwrite);
+  const bool to_stdout = is_standard_output(options.out) || is_standard_output(options.distributions_out);
+  print_summary(fits, options, to_stdout ? std::cerr : std::cout);
   return 0;
 }
 

@@ -17,6 +17,7 @@
 #include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/synthetic/synthetic_line.hpp"
 #include "options.hpp"
+#include "result_output.hpp"
 
 namespace growthuq::cli {
 namespace {
@@ -161,6 +162,10 @@ int run_synth(const Arguments& arguments) {
     }
   }
 
+  if (is_standard_output(options.out)) {
+    throw InputError(options.out, "standard output cannot take a data set (a folder per line): expected a folder "
+                                  "name (./- for one named -)");
+  }
   const auto start = std::chrono::steady_clock::now();
   for (const LineDistributions& truth : truths) {
     const auto line_start = std::chrono::steady_clock::now();

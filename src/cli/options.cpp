@@ -76,6 +76,48 @@ void refuse_empty_values(const po::variables_map& values, std::string_view comma
 
 }  // namespace
 
+// Every help text is this wide: Boost.Program_options' default for the option list, and a
+// terminal's default width.
+const std::size_t help_width = po::options_description::m_default_line_length;
+
+std::string wrapped_help(std::string_view text, std::string_view first, std::string_view indent) {
+  std::string out(first);
+  std::size_t column = first.size();
+  bool line_has_words = false;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    if (text.compare(at, 2, "\n\n") == 0) {  // a paragraph ends
+      out += "\n\n" + std::string(indent);
+      column = indent.size();
+      line_has_words = false;
+      at = text.find_first_not_of('\n', at);
+      continue;
+    }
+    if (text[at] == ' ' || text[at] == '\n') {
+      ++at;
+      continue;
+    }
+    const std::size_t end = std::min(text.find_first_of(" \n", at), text.size());
+    const std::string_view word = text.substr(at, end - at);
+    if (line_has_words && column + 1 + word.size() > help_width) {
+      out += "\n" + std::string(indent);
+      column = indent.size();
+      line_has_words = false;
+    }
+    if (line_has_words) {
+      out += ' ';
+      ++column;
+    }
+    out += word;
+    column += word.size();
+    line_has_words = true;
+    at = end;
+  }
+  return out;
+}
+
+void print_version(std::ostream& out) { out << "growthuq " << GROWTHUQ_VERSION << "\n"; }
+
 InputError missing_argument(std::string_view command, std::string_view usage, std::string_view what) {
   const std::string name(command);
   return InputError("growthuq " + name, "missing " + std::string(what) + ": growthuq " + name + " " + std::string(usage) +
@@ -89,14 +131,19 @@ InputError missing_argument(std::string_view command, std::string_view usage, co
 bool parse_arguments(const Arguments& arguments, std::string_view command, std::string_view usage,
                      std::string_view description, po::options_description options,
                      const po::positional_options_description& positional, po::variables_map& values) {
-  options.add_options()("help,h", "print this help and exit");
+  options.add_options()("help,h", "print this help and exit")("version", "print the version and exit");
   refuse_option_as_value(arguments, command, options);
   try {
     po::store(po::command_line_parser(arguments).options(options).positional(positional).run(), values);
     if (values.count("help")) {
-      std::cout << "usage: growthuq " << command << " " << usage << "\n\n"
-                << description << "\n\n"
+      const std::string usage_start = "usage: growthuq " + std::string(command) + " ";
+      std::cout << wrapped_help(usage, usage_start, std::string(usage_start.size(), ' ')) << "\n\n"
+                << wrapped_help(description, "", "") << "\n\n"
                 << options << "\n";
+      return false;
+    }
+    if (values.count("version")) {
+      print_version(std::cout);
       return false;
     }
     // Before notify(), whose "the option '--campaign' is required but missing" names an option

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -20,32 +21,38 @@ namespace detail {
 
 std::string read_text_file(const std::string& path) {
   namespace fs = std::filesystem;
+  const std::string name = source_name(path);
   const auto too_large = [&] {
-    return InputError(path, "is larger than " + std::to_string(max_input_file_bytes >> 20) +
+    return InputError(name, "is larger than " + std::to_string(max_input_file_bytes >> 20) +
                                 " MiB, the limit of an input file: expected a text file (is it the file you meant?)");
   };
-  std::error_code error;
-  const fs::file_status status = fs::status(path, error);
-  // Opened, a folder reads as an I/O error deep in the stream ("basic_filebuf::underflow").
-  if (status.type() == fs::file_type::directory) throw InputError(path, "is a directory: expected a file");
-  if (status.type() == fs::file_type::regular) {
-    const std::uintmax_t bytes = fs::file_size(path, error);
-    if (!error && bytes > max_input_file_bytes) throw too_large();
+  std::ifstream file;
+  std::istream* in = &std::cin;
+  if (path != standard_input) {
+    std::error_code error;
+    const fs::file_status status = fs::status(path, error);
+    // Opened, a folder reads as an I/O error deep in the stream ("basic_filebuf::underflow").
+    if (status.type() == fs::file_type::directory) throw InputError(path, "is a directory: expected a file");
+    if (status.type() == fs::file_type::regular) {
+      const std::uintmax_t bytes = fs::file_size(path, error);
+      if (!error && bytes > max_input_file_bytes) throw too_large();
+    }
+    file.open(path, std::ios::binary);
+    if (!file) throw InputError(path, std::string("cannot open: ") + std::strerror(errno));
+    in = &file;
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, std::string("cannot open: ") + std::strerror(errno));
-  // Read in blocks up to the limit: a device or a pipe without end (/dev/zero) is refused
-  // instead of filling memory.
+  // Read in blocks up to the limit: a device or a pipe without end (/dev/zero, a stream piped
+  // to standard input) is refused instead of filling memory.
   std::string text;
   std::array<char, 1 << 16> block{};
-  while (in) {
+  while (*in) {
     errno = 0;
-    in.read(block.data(), block.size());
-    const auto got = static_cast<std::size_t>(in.gcount());
+    in->read(block.data(), block.size());
+    const auto got = static_cast<std::size_t>(in->gcount());
     if (text.size() + got > max_input_file_bytes) throw too_large();
     text.append(block.data(), got);
   }
-  if (in.bad()) throw InputError(path, std::string("read failed") + (errno != 0 ? std::string(": ") + std::strerror(errno) : ""));
+  if (in->bad()) throw InputError(name, std::string("read failed") + (errno != 0 ? std::string(": ") + std::strerror(errno) : ""));
   return text;
 }
 
@@ -86,6 +93,11 @@ void refuse_special_file(const std::string& path) {
 }  // namespace
 
 void check_can_write(const std::string& path, Overwrite overwrite) {
+  // The commands that can print a result on stdout check "-" themselves (cli/result_output.hpp);
+  // one reaching here would otherwise become a file called "-".
+  if (path == "-") {
+    throw InputError(path, "standard output cannot take this result: expected a file name (./- for a file named -)");
+  }
   refuse_special_file(path);
   std::error_code error;
   if (overwrite == Overwrite::refuse && fs::exists(path, error)) {

@@ -75,7 +75,8 @@ void write_files_together(const std::vector<FileContent>& files, Overwrite overw
 // InputError when `path` exists and overwriting was not allowed, or when it exists and is not
 // a regular file (a directory, a device, a FIFO, a socket; a symbolic link counts as what it
 // points to), whatever `overwrite` says (checked before long work starts, so a run does not
-// fail only at its end).
+// fail only at its end). "-" (standard output, for the commands that print a result there) is
+// an InputError too: never a file named "-".
 void check_can_write(const std::string& path, Overwrite overwrite);
 
 // The steps every writer shares (PartialFile, results.h5), for one that creates its partial
