@@ -125,7 +125,12 @@ class OutputObserver final : public RunObserver {
   void open(const PreparedCampaign& campaign) {
     const Campaign& c = campaign.campaign();
     if (c.formats.csv) samples_.emplace(in_directory(c.output_dir, samples_csv_name), sample_columns(campaign));
-    if (c.formats.hdf5) h5_.emplace(in_directory(c.output_dir, results_h5_name), Overwrite::allow);
+    if (c.formats.hdf5) {
+      h5_.emplace(in_directory(c.output_dir, results_h5_name), Overwrite::allow);
+      std::vector<std::string> names;  // the campaign's order; the lines run with the reference line first
+      for (const CampaignLine& line : c.lines) names.push_back(line.name);
+      h5_->declare_lines(names);
+    }
   }
 
   void line_started(const PreparedLine& line, std::size_t samples) override {
