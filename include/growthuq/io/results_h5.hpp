@@ -14,7 +14,8 @@
 //                                  (uint64), median, q1, q3, iqr, p10, p90, mean, sd,
 //                                  median_ci_low, median_ci_high (float64; NaN where summary.csv
 //                                  has an empty cell); dimension summary_row
-//   /lines/<line>/                 one group per line (attribute `samples`)
+//   /lines/<line>/                 one group per line (attributes `samples`, and `columns`: the
+//                                  column names in samples.csv's order, inputs then outputs)
 //     sample                       uint64 [samples], 0-based index of the sample in its line: the
 //                                  dimension scale of the columns and of status
 //     <column>                     float64 [sample], in its quantity's default unit whatever the
@@ -33,9 +34,10 @@
 //                                  `columns`), explained_variance_ratio [component], loadings
 //                                  [variable, component] (attribute `rows`); group attributes
 //                                  samples_used (uint64) and notes (strings, may be empty)
-// Every numeric dataset has the attribute `units` ("1" for indices, codes and correlations);
-// every dataset has its dimensions as HDF5 dimension scales (H5DS), so xarray needs no
-// phony_dims. Names are variable-length UTF-8 strings (h5py returns str; inside the compound
+// Every dataset has its dimensions as HDF5 dimension scales (H5DS), so xarray needs no
+// phony_dims; a row index other than `sample` (`<table>_row`, `point`, `replicate`,
+// `component`) is netCDF's "dimension but not a variable", never written, taking no room.
+// Every other numeric dataset has the attribute `units` ("1" for sample, codes, correlations). Names are variable-length UTF-8 strings (h5py returns str; inside the compound
 // tables it returns bytes). Datasets are contiguous and uncompressed: sampled doubles barely
 // compress (deflate saves 5-15 % at 10x the write time, measured in results_h5.cpp).
 #pragma once

@@ -111,10 +111,10 @@ def _correlations(h5, lines):
 
 
 def _line_dataset(path, line):
-    """One line's columns and status on its `sample` dimension, as xarray opens the group."""
+    """One line's columns (in samples.csv's order: the group attribute `columns`) and status on
+    its `sample` dimension, as xarray opens the group."""
     with xr.open_dataset(path, group=f"lines/{line}", engine="h5netcdf", decode_timedelta=False) as group:
-        columns = [name for name in group.data_vars if group[name].dims == ("sample",) and "role" in group[name].attrs]
-        dataset = group[columns + ["status"]].load()
+        dataset = group[_texts(group.attrs["columns"]) + ["status"]].load()
     names = np.array(_texts(dataset["status"].attrs["names"]), dtype=object)
     dataset["status"] = ("sample", names[dataset["status"].values.astype(np.int64)])
     return dataset
@@ -122,7 +122,7 @@ def _line_dataset(path, line):
 
 def _combined(datasets, lines):
     """The lines' datasets along a `line` dimension; a column a line lacks is NaN there. Inputs
-    come before outputs, each in the order the lines first give them."""
+    come before outputs, each in the order the lines (in campaign order) first give them."""
     names = []
     for dataset in datasets:
         names += [name for name in dataset.data_vars if name not in names and name != "status"]

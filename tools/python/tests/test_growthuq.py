@@ -99,6 +99,12 @@ class RunAndLoad(unittest.TestCase):
     def test_samples_are_those_of_samples_csv_with_one_einf_column(self):
         frame, csv = self.results.samples, self.samples_csv
         self.assertEqual(len(frame), 2 * SAMPLES)
+        # samples.csv's columns, the two einf columns as one; line, sample, inputs, outputs, status.
+        self.assertEqual(set(frame.columns), set(csv.columns) - {"einf_pct"})
+        self.assertEqual(list(frame.columns[:2]), ["line", "sample"])
+        self.assertEqual(frame.columns[-1], "status")
+        roles = [self.results.dataset[c].attrs["role"] for c in frame.columns[2:-1]]
+        self.assertEqual(roles, sorted(roles))  # "input" < "output"
         self.assertEqual(list(frame["line"].astype(str)), list(csv["line"]))
         np.testing.assert_array_equal(frame["sample"], csv["sample"])
         self.assertEqual(list(frame["status"]), list(csv["status"]))
