@@ -37,9 +37,11 @@
 // Every dataset has its dimensions as HDF5 dimension scales (H5DS), so xarray needs no
 // phony_dims; a row index other than `sample` (`<table>_row`, `point`, `replicate`,
 // `component`) is netCDF's "dimension but not a variable", never written, taking no room.
-// Every other numeric dataset has the attribute `units` ("1" for sample, codes, correlations). Names are variable-length UTF-8 strings (h5py returns str; inside the compound
-// tables it returns bytes). Datasets are contiguous and uncompressed: sampled doubles barely
-// compress (deflate saves 5-15 % at 10x the write time, measured in results_h5.cpp).
+// Every other numeric dataset has the attribute `units` ("1" for sample, codes, correlations).
+// Text is variable-length UTF-8: h5py returns attributes as str, and string datasets (label
+// dimensions) and the text of compound tables as bytes (h5py 3; xarray and pandas decode them).
+// Datasets are contiguous and uncompressed: sampled doubles barely compress (deflate saves
+// 5-15 % at 10x the write time, measured in results_h5.cpp).
 #pragma once
 
 #include <cstdint>
