@@ -157,7 +157,12 @@ class OutputObserver final : public RunObserver {
     fs::create_directories(staging_, error);
     if (error) throw WriteError(staging_, "cannot create the folder the results are written to: " + error.message());
     if (c.formats.csv) samples_.emplace(in_directory(staging_, samples_csv_name), sample_columns(campaign));
-    if (c.formats.hdf5) h5_.emplace(in_directory(staging_, results_h5_name), Overwrite::allow);
+    if (c.formats.hdf5) {
+      h5_.emplace(in_directory(staging_, results_h5_name), Overwrite::allow);
+      std::vector<std::string> names;  // the campaign's order; the lines run with the reference line first
+      for (const CampaignLine& line : c.lines) names.push_back(line.name);
+      h5_->declare_lines(names);
+    }
   }
 
   void line_started(const PreparedLine& line, std::size_t samples) override {

@@ -241,3 +241,16 @@ TEST_CASE("family_name and describe") {
   CHECK(describe(Distribution(Weibull(1.5, 2))) == "weibull(shape=1.5, scale=2)");
   CHECK(describe(Distribution(Normal(1, 0.25))) == "normal(mean=1, sd=0.25)");
 }
+
+TEST_CASE("parameter_values: the parameters describe() rounds, as the exact doubles") {
+  using Parameters = std::vector<std::pair<std::string, double>>;
+  // 25.950912345 prints as 25.9509 in describe(): the numbers keep every digit.
+  CHECK(parameter_values(Distribution(Gamma(25.950912345, 0.10752412345))) ==
+        Parameters{{"shape", 25.950912345}, {"scale", 0.10752412345}});
+  CHECK(describe(Distribution(Gamma(25.950912345, 0.10752412345))) == "gamma(shape=25.9509, scale=0.107524)");
+  CHECK(parameter_values(Distribution(Lognormal(-1.25, 0.3))) == Parameters{{"mu", -1.25}, {"sigma", 0.3}});
+  CHECK(parameter_values(Distribution(TruncatedNormal(0.5, 2, 0, 1))) ==
+        Parameters{{"mean", 0.5}, {"sd", 2}, {"lower", 0}, {"upper", 1}});
+  CHECK(parameter_values(Distribution(Empirical({3, 1, 2, 7}))) == Parameters{{"n", 4}, {"min", 1}, {"max", 7}});
+  CHECK(describe(Distribution(Empirical({3, 1, 2, 7}))) == "empirical(n=4, min=1, max=7)");
+}
