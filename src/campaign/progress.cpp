@@ -124,6 +124,10 @@ void StepProgress::finish() {
   out_ << label_ << ": " << done_ << " " << item_ << (done_ == 1 ? "" : "s") << " in " << timing << "\n" << std::flush;
 }
 
+void StepProgress::clear() {
+  if (mode_ == ProgressMode::bar) out_ << "\r\033[K" << std::flush;
+}
+
 std::string StepProgress::status(Clock::time_point now) const {
   const double elapsed = seconds_between(start_, now);
   char text[64];

@@ -52,6 +52,8 @@ class StepProgress {
   void advance(std::size_t items = 1);
   // Clears the bar and prints the line with the time the step took.
   void finish();
+  // Clears the bar and prints nothing (the caller reports the outcome itself).
+  void clear();
 
  private:
   using Clock = std::chrono::steady_clock;

@@ -1,10 +1,14 @@
 // growthuq indent: one forward simulation of the finite-element shell model (src/fe/README.md):
 // inflate a tube of given p, E, h, d0 and press the probe into it. Writes the force curve as
 // CSV (and, with --field, the deformed wall as HDF5 + XDMF) and prints `name = value` lines.
+#include <algorithm>
+#include <cmath>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "campaign/progress.hpp"
 #include "commands.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -29,6 +33,7 @@ struct IndentFlags {
   std::string field;
   std::string out;
   bool force = false;
+  bool quiet = false;
 };
 
 double positive(const std::string& text, std::string_view key, std::string_view what) {
@@ -89,7 +94,9 @@ int run_indent(const Arguments& arguments) {
                                          "(per-face von Mises and principal membrane stresses in MPa, displacement per "
                                          "vertex in um; ParaView opens the .xdmf)")
       ("out", po::value(&flags.out), "force curve CSV: delta_um, F_uN, contact_radius_um (required)")
-      ("force", po::bool_switch(&flags.force), "overwrite --out and --field if they exist");
+      ("force", po::bool_switch(&flags.force), "overwrite --out and --field if they exist")
+      ("quiet", po::bool_switch(&flags.quiet), "no progress on stderr (by default: the depth reached, the time and "
+                                               "the time left, as a bar on a terminal, a line every 5 s otherwise)");
   po::variables_map values;
   if (!parse_arguments(arguments, "indent", usage,
                        "One finite-element simulation of a pressurised pollen tube under a spherical probe: the wall\n"
@@ -116,7 +123,23 @@ int run_indent(const Arguments& arguments) {
     check_can_write(shell_field_data_path(flags.field), overwrite);
   }
 
-  const IndentationCurve curve = indent(input, options, !flags.field.empty());
+  // A curve takes minutes: its progress in nanometres of depth (a deepened curve starts anew).
+  const ProgressMode mode = choose_progress_mode(flags.quiet);
+  std::optional<StepProgress> progress;
+  std::size_t shown = 0, shown_total = 0;
+  const auto follow = [&](double depth, double max_depth) {
+    const auto total = static_cast<std::size_t>(std::lround(max_depth * 1e9));
+    const auto reached = std::min(total, static_cast<std::size_t>(std::lround(depth * 1e9)));
+    if (!progress || total != shown_total) {
+      if (progress) progress->clear();
+      progress.emplace(mode, std::cerr, "indent", "nm of depth", total);
+      shown = 0, shown_total = total;
+    }
+    progress->advance(reached - shown);
+    shown = reached;
+  };
+  const IndentationCurve curve = indent(input, options, !flags.field.empty(), follow);
+  if (progress) progress->clear();
 
   CsvWriter writer({"delta_um", "F_uN", "contact_radius_um"});
   for (std::size_t i = 0; i < curve.depth.size(); ++i) {

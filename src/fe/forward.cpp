@@ -349,6 +349,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
       lost = true;
       return false;
     }
+    if (p.on_depth) p.on_depth(t * p.max_depth);
     return true;
   };
   LoadSteppingOptions indentation;

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,8 @@ struct ForwardProblem {            // all dimensionless
   double tube_length = 0.0;        // L/d0 (tube only)
   double probe_distance = 0.0;     // a/d0 behind the apex (tube only)
   double max_depth = 0.0;          // deepest indentation, / d0
+  // Called after each converged indentation step with its depth (/ d0), for a progress display.
+  std::function<void(double)> on_depth;
   bool substrate = true;
   bool bending = true;
   bool half_model = true;

@@ -47,7 +47,8 @@ double automatic_depth(const IndentationInput& input, const ShellFeOptions& opti
 
 }  // namespace
 
-IndentationCurve indent(const IndentationInput& input, const ShellFeOptions& options, bool keep_field) {
+IndentationCurve indent(const IndentationInput& input, const ShellFeOptions& options, bool keep_field,
+                        const IndentationProgress& progress) {
   const auto start = std::chrono::steady_clock::now();
   const std::string location = "shell_fe indent";
   options.validate(location);
@@ -93,6 +94,7 @@ IndentationCurve indent(const IndentationInput& input, const ShellFeOptions& opt
   const double low = options.force_window[0], high = options.force_window[1];
   for (int attempt = 0;; ++attempt) {
     problem.max_depth = depth / d0;
+    if (progress) problem.on_depth = [&](double reached) { progress(reached * d0, depth); };
     const fe::ForwardResult result = fe::simulate_forward(problem);
     fe::curve_in_si(result, d0, E, curve);
     if (keep_field) curve.field = fe::field_in_si(result, d0, E);

@@ -2,6 +2,7 @@
 // read back and compared with the library, the inverse of the forward, one-line errors.
 #include <doctest/doctest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -82,6 +83,21 @@ TEST_CASE("indent: the curve and the name = value lines, as the library computes
   CHECK(fit.slope == doctest::Approx(k).epsilon(1e-12));  // uN/um = N/m, the CLI's own k
   CHECK(fs::exists(scratch.root / "wall.xdmf"));
   CHECK(fs::exists(scratch.root / "wall.h5"));
+
+  // Progress on stderr (not a terminal here: a line every 5 s, how many depends on the machine's
+  // speed): "indent: nm of depth A/B, T s[, about L s left]", A rising towards the depth B; a
+  // curve deepened for the window's top starts again from 0 towards a larger B.
+  std::size_t previous = 0, previous_total = 0, lines = 0;
+  for (std::size_t start = 0; (start = run.err.find("indent: nm of depth ", start)) != std::string::npos; ++start) {
+    std::size_t reached = 0, total = 0;
+    REQUIRE(std::sscanf(run.err.c_str() + start, "indent: nm of depth %zu/%zu,", &reached, &total) == 2);
+    CHECK(reached <= total);
+    CHECK(total >= previous_total);
+    if (total == previous_total) CHECK(reached >= previous);
+    previous = reached, previous_total = total, ++lines;
+  }
+  if (lines > 0) CHECK(static_cast<double>(previous_total) >= delta.back() * 1e3 - 1);
+  MESSAGE(lines << " progress lines");
 
   // eval --fidelity shell_fe on the forward's k and d recovers p and E (tolerance as in
   // tests/fe/test_shell_fe_model.cpp: the load steps of two curves, 2e-3).

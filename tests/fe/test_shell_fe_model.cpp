@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "fe/force_window.hpp"
 #include "growthuq/fe/indentation.hpp"
@@ -66,9 +67,23 @@ TEST_CASE("shell_fe model: the inverse recovers the p and E of a forward simulat
   // The inflation refinement stops at |d_FE/d - 1| <= tolerance; d ln(lambda)/d ln(p/E) is
   // about ln(lambda) ~ 0.18 here, so 1e-8 in d gives about 6e-8 in p/E.
   options.inflation_tolerance = 1e-8;
-  const IndentationCurve forward = indent(input, options);
+  std::vector<double> reported, targets;
+  const IndentationCurve forward =
+      indent(input, options, false, [&](double depth, double max_depth) { reported.push_back(depth), targets.push_back(max_depth); });
   REQUIRE(forward.status == ShellFeStatus::ok);
   REQUIRE(forward.stiffness > 0);
+  // The progress follows the last curve's steps: one report per recorded point after the
+  // first (depth 0), the depths it reports and the curve's the same (a deepened curve starts
+  // again from 0, so only the reports towards the last target are its steps).
+  REQUIRE_FALSE(reported.empty());
+  const double target = targets.back();
+  std::vector<double> last;
+  for (std::size_t i = 0; i < reported.size(); ++i) {
+    if (targets[i] == target) last.push_back(reported[i]);
+  }
+  REQUIRE(last.size() + 1 == forward.depth.size());
+  for (std::size_t i = 0; i < last.size(); ++i) CHECK(last[i] == doctest::Approx(forward.depth[i + 1]).epsilon(1e-12));
+  CHECK(last.back() <= target * (1 + 1e-12));
 
   ShellFeMeasurement tube;
   tube.stiffness = forward.measured_stiffness;

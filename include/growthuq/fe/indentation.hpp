@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -119,11 +120,17 @@ struct IndentationCurve {
   ShellFeField field;                    // empty unless asked for
 };
 
+// Progress of indent(): after each converged indentation step, its depth and the depth the
+// curve is going to (m). A deepened curve starts again from 0 towards its new depth.
+using IndentationProgress = std::function<void(double depth, double max_depth)>;
+
 // One forward simulation: inflate to p, indent to `input.depth` (or, when 0, deep enough for
 // the force window's top, deepened up to twice if the first depth fell short), fit k.
-// `keep_field` fills `field` with the final state. Throws InputError only for invalid input or
-// options and an unreadable mesh file; a numerical failure is a status.
-IndentationCurve indent(const IndentationInput& input, const ShellFeOptions& options, bool keep_field = false);
+// `keep_field` fills `field` with the final state; `progress`, if given, follows the
+// indentation. Throws InputError only for invalid input or options and an unreadable mesh
+// file; a numerical failure is a status.
+IndentationCurve indent(const IndentationInput& input, const ShellFeOptions& options, bool keep_field = false,
+                        const IndentationProgress& progress = {});
 
 // The inverse's input: one measured tube, SI.
 struct ShellFeMeasurement {
