@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "support/cli_inputs.hpp"
 #include "support/cli_run.hpp"
 #include "support/scratch_directory.hpp"
 #include "support/text_file.hpp"
@@ -17,20 +18,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* const line_file =
-    "[line]\nname = test_line\n\n"
-    "[k]\nlaw = lognormal\nmedian = 2.87\niqr = 0.83\nunit = N/m\nsource = published median and IQR\n";
-
-const char* const stiffness_csv = "k_N_per_m\n2.41\n3.12\n2.05\n2.87\n4.40\n2.66\n3.35\n1.92\n2.71\n3.80\n";
-
-const char* const tubes_csv = "k_N_per_m,d_um,d0_um,h_nm\n2.87,6.56,5.35,145\n3.10,6.20,5.30,150\n";
-
-void write_inputs(const fs::path& root) {
-  spit(root / "line.ini", line_file);
-  spit(root / "k.csv", stiffness_csv);
-  spit(root / "tubes.csv", tubes_csv);
-}
-
 const std::vector<std::string> command_names{"sample", "fit",      "eval",     "correlate", "relax",  "run",
                                              "check",  "tradeoff", "synth",    "fit-line",  "indent"};
 
@@ -38,7 +25,7 @@ const std::vector<std::string> command_names{"sample", "fit",      "eval",     "
 
 TEST_CASE("--out - prints the result alone on stdout, as the file would hold it; the report goes to stderr") {
   const ScratchDirectory scratch("cli_dash_out");
-  write_inputs(scratch.root);
+  write_cli_inputs(scratch.root);
   struct Case {
     std::string to_file;   // writes file.out
     std::string to_stdout;
@@ -50,7 +37,7 @@ TEST_CASE("--out - prints the result alone on stdout, as the file would hold it;
       {"correlate --rho-um 0.5 --samples 200 --seed 3 --out file.out", "correlate --rho-um 0.5 --samples 200 --seed 3 --out -"},
   };
   fs::create_directories(scratch.root / "raw");
-  spit(scratch.root / "raw" / "k.csv", stiffness_csv);
+  spit(scratch.root / "raw" / "k.csv", cli_stiffness_csv);
   spit(scratch.root / "raw" / "raw.ini", "[line]\nname = r\n[measurement k]\nfile = k.csv\ncolumn = k_N_per_m\nunit = N/m\n");
   for (const Case& c : cases) {
     CAPTURE(c.to_stdout);
@@ -85,7 +72,7 @@ TEST_CASE("--out - prints the result alone on stdout, as the file would hold it;
 
 TEST_CASE("- as an input reads standard input; commands that cannot print a result there refuse -") {
   const ScratchDirectory scratch("cli_dash_in");
-  write_inputs(scratch.root);
+  write_cli_inputs(scratch.root);
   REQUIRE(run_cli("eval --rho-um 0.5 --in tubes.csv --out from_file.csv", scratch.root).exit_code == 0);
   const CliOutcome piped = run_cli("eval --rho-um 0.5 --in - --out from_stdin.csv <tubes.csv", scratch.root);
   CHECK(piped.exit_code == 0);

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "support/cli_inputs.hpp"
 #include "support/cli_run.hpp"
 #include "support/scratch_directory.hpp"
 #include "support/text_file.hpp"
@@ -22,10 +23,6 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::string source = GROWTHUQ_SOURCE_DIR;
-
-const char* const line_file =
-    "[line]\nname = test_line\n\n"
-    "[k]\nlaw = lognormal\nmedian = 2.87\niqr = 0.83\nunit = N/m\nsource = published median and IQR\n";
 
 // One line on stderr, ending in a newline, and no other control character in it: nothing of
 // the input acts on the terminal.
@@ -71,7 +68,7 @@ TEST_CASE("a directory given as an input file is named as one, by every command 
   for (const std::string& command : commands) {
     CAPTURE(command);
     const ScratchDirectory scratch("cli_directory_input");
-    spit(scratch.root / "line.ini", line_file);
+    spit(scratch.root / "line.ini", cli_line_file);
     fs::create_directories(scratch.root / "DIR");
     const CliOutcome run = run_cli(command, scratch.root);
     CAPTURE(run.err);
@@ -94,7 +91,7 @@ TEST_CASE("an input without end (/dev/zero) is refused at the stated limit inste
 
 TEST_CASE("an empty word as an option's value is refused naming the option") {
   const ScratchDirectory scratch("cli_empty_word");
-  spit(scratch.root / "line.ini", line_file);
+  spit(scratch.root / "line.ini", cli_line_file);
   const CliOutcome out = run_cli("sample --line line.ini --samples 10 --seed 1 --out ''", scratch.root);
   CHECK(out.exit_code == 2);
   CHECK(out.err == "growthuq sample: error: --out = '': expected a non-empty value\n");
@@ -116,7 +113,7 @@ TEST_CASE("an empty word as an option's value is refused naming the option") {
 
 TEST_CASE("an option where a value belongs is named, not reported as too many positional options") {
   const ScratchDirectory scratch("cli_option_as_value");
-  spit(scratch.root / "line.ini", line_file);
+  spit(scratch.root / "line.ini", cli_line_file);
   const CliOutcome run = run_cli("sample --line line.ini --samples --seed 1 --out d.csv", scratch.root);
   CHECK(run.exit_code == 2);
   CHECK(run.err == "growthuq sample: error: --samples needs a value, but the next word is the option --seed (see "
@@ -156,7 +153,7 @@ TEST_CASE("an output on a pseudo file system (/proc) is named as such, not as a 
     return;
   }
   const ScratchDirectory scratch("cli_proc_output");
-  spit(scratch.root / "line.ini", line_file);
+  spit(scratch.root / "line.ini", cli_line_file);
   const CliOutcome sample = run_cli("sample --line line.ini --samples 10 --seed 1 --out /proc/design.csv", scratch.root);
   CHECK(sample.exit_code == 2);
   CHECK(sample.err == "growthuq sample: error: /proc/design.csv: is on a pseudo file system that stores no files (such as "
