@@ -107,7 +107,7 @@ echo "Slurm is up: node $host, $(sinfo -h -o '%C') CPUs (allocated/idle/other/to
 # The serial reference.
 "$cli" run "$campaign" --quiet --formats csv,hdf5 --out "$work/serial" >"$work/serial.out"
 
-# One batch job per way of starting the processes; the job's script is the README's example.
+# One batch job per way of starting the processes, written as the README's sbatch example.
 submit() {
   local name=$1 launch=$2
   cat >"$work/jobs/$name.sbatch" <<EOF
