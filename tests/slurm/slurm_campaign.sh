@@ -22,7 +22,7 @@ for program in munged mungekey slurmctld slurmd sbatch squeue sinfo mpirun; do
 done
 
 rm -rf "$work"
-mkdir -p "$work"/{state,spool,munge,jobs}
+mkdir -p "$work"/{state,spool,munge,jobs,tmp}
 chmod 700 "$work/munge"
 daemons=()
 stop_daemons() {
@@ -44,7 +44,7 @@ show_logs() {
 }
 
 # munge: a key of this test's own and a socket in the scratch folder.
-mungekey --create --keyfile="$work/munge/munge.key" >/dev/null
+mungekey --create --keyfile="$work/munge/munge.key" >/dev/null || skip "mungekey could not make a key"
 munged --force --foreground --socket="$work/munge/socket" --key-file="$work/munge/munge.key" \
   --pid-file="$work/munge/munged.pid" --seed-file="$work/munge/seed" --log-file="$work/munged.log" \
   2>>"$work/munged.log" &
@@ -70,6 +70,8 @@ AuthInfo=socket=$work/munge/socket
 CredType=cred/munge
 StateSaveLocation=$work/state
 SlurmdSpoolDir=$work/spool
+# The PMIx plugin's per-step folders (else in /tmp, where another run of this test would meet them)
+TmpFS=$work/tmp
 SlurmctldPidFile=$work/slurmctld.pid
 SlurmdPidFile=$work/slurmd.pid
 SlurmctldLogFile=$work/slurmctld.log
