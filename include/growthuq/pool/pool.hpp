@@ -124,14 +124,16 @@ std::vector<std::vector<double>> run_items(Pool& pool, std::size_t count,
 // A pool of one process that runs chunks in order.
 std::unique_ptr<Pool> make_serial_pool();
 
-// True when this process was started by mpirun/mpiexec (Open MPI or PMIx environment).
+// True when this process was started in parallel: by mpirun, or as one of several tasks of srun
+// (growthuq/pool/launch.hpp reads the environment).
 bool launched_by_mpi();
 
 // The MPI pool over MPI_COMM_WORLD; initializes MPI on first use and finalizes it at exit.
 // Only call when launched_by_mpi().
 std::unique_ptr<Pool> make_mpi_pool();
 
-// The MPI pool when launched by mpirun, else the serial pool.
+// The MPI pool when launched in parallel, else the serial pool. Throws UnjoinableLaunch
+// (launch.hpp) when the process was started in parallel but cannot join the others.
 std::unique_ptr<Pool> make_pool();
 
 }  // namespace growthuq
