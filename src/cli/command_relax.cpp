@@ -1,6 +1,7 @@
 // growthuq relax: generalized Maxwell fits of force-relaxation curves, one row per curve in a
-// CSV, a summary on stdout and, on request, lognormal distribution entries for tau and e_inf
-// in the line-file format (Eqs. (R1)-(R7), src/relaxation/README.md).
+// CSV, a summary on stdout and, on request, distribution entries for tau (lognormal) and e_inf
+// (beta, bounded like the fraction) in the line-file format (Eqs. (R1)-(R7),
+// src/relaxation/README.md).
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -11,6 +12,8 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
+#include "growthuq/distributions/fit.hpp"
+#include "growthuq/distributions/line_file.hpp"
 #include "growthuq/io/csv.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "growthuq/mechanics/instrument.hpp"
@@ -50,7 +53,7 @@ RelaxOptions parse(const Arguments& arguments, bool& run) {
       ("rho-um", po::value(&rho_um), "probe radius (um) of every curve; a rho_um column, if any, must agree")
       ("nu", po::value(&nu)->default_value(nu), "Poisson ratio of the wall")
       ("fit-distributions", po::value(&options.distributions_out),
-       "write lognormal [tau] and [einf] line-file sections fitted to the ok curves (- for standard output)")
+       "write [tau] (lognormal) and [einf] (beta) line-file sections fitted to the ok curves (- for standard output)")
       ("force", "overwrite existing outputs");
   po::positional_options_description positional;
   positional.add("curves", 1);
@@ -115,6 +118,18 @@ std::string lognormal_section(std::string_view name, std::string_view unit, cons
   return out.str();
 }
 
+// einf is a fraction: its section is the beta ML fit (Eq. (D5), src/distributions/README.md), a law
+// that never draws above 1; a lognormal's upper tail reaches past 1, and line files refuse it.
+std::string beta_section(const std::vector<double>& einf, const std::string& source) {
+  try {
+    const FitResult fit = fit_distribution(FitFamily::beta, einf);
+    return format_line_variable(
+        LineVariable{"einf", &find_unit("frac", "growthuq relax", "unit"), fit.distribution, source, "", 0});
+  } catch (const InputError& error) {
+    throw InputError("--fit-distributions", "einf of the ok curves: " + error.problem());
+  }
+}
+
 std::string distributions_text(const std::vector<CurveFit>& fits, const std::string& curves_path) {
   std::vector<double> tau, einf;
   for (const CurveFit& fit : fits) {
@@ -127,9 +142,9 @@ std::string distributions_text(const std::vector<CurveFit>& fits, const std::str
                                                 " curve(s) with status ok: expected at least 2 to fit a lognormal");
   }
   const std::string source = "fitted from " + curves_path + ", " + std::to_string(tau.size()) + " curves";
-  return "# Written by growthuq relax: lognormal maximum-likelihood fits to the per-curve slow relaxation\n"
-         "# time and rescaled equilibrium modulus E_inf/E_r(0) of the curves with status ok.\n" +
-         lognormal_section("tau", "s", tau, source) + "\n" + lognormal_section("einf", "frac", einf, source);
+  return "# Written by growthuq relax: maximum-likelihood fits to the per-curve slow relaxation time\n"
+         "# (lognormal) and rescaled equilibrium modulus E_inf/E_r(0) (beta) of the curves with status ok.\n" +
+         lognormal_section("tau", "s", tau, source) + "\n" + beta_section(einf, source);
 }
 
 void print_summary(const std::vector<CurveFit>& fits, const RelaxOptions& options, std::ostream& report) {

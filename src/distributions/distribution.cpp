@@ -68,6 +68,7 @@ std::string_view family_name(const Distribution& distribution) {
                                [](const Uniform&) { return std::string_view("uniform"); },
                                [](const Gamma&) { return std::string_view("gamma"); },
                                [](const Weibull&) { return std::string_view("weibull"); },
+                               [](const Beta&) { return std::string_view("beta"); },
                                [](const Empirical&) { return std::string_view("empirical"); }},
                     distribution);
 }
@@ -84,6 +85,7 @@ std::vector<std::pair<std::string, double>> parameter_values(const Distribution&
           [](const Uniform& d) { return Parameters{{"lower", d.lower()}, {"upper", d.upper()}}; },
           [](const Gamma& d) { return Parameters{{"shape", d.shape()}, {"scale", d.scale()}}; },
           [](const Weibull& d) { return Parameters{{"shape", d.shape()}, {"scale", d.scale()}}; },
+          [](const Beta& d) { return Parameters{{"alpha", d.alpha()}, {"beta", d.beta()}, {"upper", d.upper()}}; },
           [](const Empirical& d) {
             return Parameters{{"n", static_cast<double>(d.sorted_data().size())}, {"min", d.lower()}, {"max", d.upper()}};
           }},

@@ -105,15 +105,29 @@ VariableFit fit_variable_by_aic(std::string variable, const Unit& unit, std::vec
   fit.families = std::move(families);
   double best = std::numeric_limits<double>::infinity();
   std::string failures;
+  // Where the fraction is 1 in the values' unit (100 in %), for fractions (einf).
+  const bool fraction = unit.dimension == Dimension::fraction;
+  const double fraction_upper = 1.0 / unit.to_si;
   for (const FitFamily family : fit.families) {
     FamilyFit candidate;
     candidate.family = family;
     try {
-      FitResult result = fit_distribution(family, fit.values);
+      if (family == FitFamily::beta && !fraction) {
+        throw InputError("", "the beta law is a law of fractions (einf); " + fit.variable + " is in " +
+                                 std::string(unit.symbol));
+      }
+      FitResult result = fit_distribution(family, fit.values, fraction_upper);
       // A law that would draw inf or 0 (one mistyped value can stretch a fit that far) is no
       // fit: another family may still describe the data (sampled_range.hpp).
       if (const std::optional<std::string> problem = sampled_range_problem(result.distribution, unit.to_si)) {
         throw InputError("", describe(result.distribution) + " cannot be sampled: " + *problem);
+      }
+      // Nor is a law of a fraction that would draw values above 1 (100 %) or below 0: however
+      // good its AIC, those samples are no tube's.
+      if (fraction) {
+        if (const std::optional<std::string> problem = fraction_range_problem(result.distribution, fraction_upper)) {
+          throw InputError("", describe(result.distribution) + " would draw fractions outside [0, 1]: " + *problem);
+        }
       }
       candidate.result = std::move(result);
       if (candidate.result->aic < best) {
@@ -188,7 +202,7 @@ RawLineFit fit_raw_line(const RawLineFile& raw, const RawFitSettings& settings) 
                                std::to_string(curves) + " curves fitted";
     result.variables.push_back(fit_variable_by_aic("tau", unit_named("s"), std::move(tau), raw.relaxation.families,
                                                    "tau_slow of " + source, location));
-    result.variables.push_back(fit_variable_by_aic("einf", unit_named("frac"), std::move(einf), raw.relaxation.families,
+    result.variables.push_back(fit_variable_by_aic("einf", unit_named("frac"), std::move(einf), raw.relaxation.einf_families,
                                                    "E_inf/E_r(0) of " + source, location));
   }
   result.distributions = line_distributions_of(raw, result.variables);

@@ -11,6 +11,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/distributions/fit.hpp"
 #include "growthuq/io/csv.hpp"
 #include "io/ini.hpp"
 #include "growthuq/relaxation/curves.hpp"
@@ -185,6 +186,13 @@ TEST_CASE("growthuq relax: fits simulated curves, writes fits and distribution e
   CHECK(section->find("source")->value == "fitted from curves.csv, 3 curves");
   REQUIRE(ini.find("einf") != nullptr);
   CHECK(ini.find("einf")->find("unit")->value == "frac");
+  // einf, a fraction, gets the bounded beta law: the beta ML fit of the einf column just written.
+  CHECK(ini.find("einf")->find("law")->value == "beta");
+  const FitResult einf = fit_distribution(FitFamily::beta, fits.numeric_column("einf_frac"));
+  CHECK(parse_double(ini.find("einf")->find("alpha")->value, "", "alpha") ==
+        doctest::Approx(std::get<Beta>(einf.distribution).alpha()).epsilon(1e-9));
+  CHECK(parse_double(ini.find("einf")->find("beta")->value, "", "beta") ==
+        doctest::Approx(std::get<Beta>(einf.distribution).beta()).epsilon(1e-9));
 
   // Results are never overwritten without --force.
   const Run again = relax(folder, "curves.csv --meta meta.csv --out fits.csv");

@@ -28,6 +28,7 @@ class TruncatedNormal;
 class Uniform;
 class Gamma;
 class Weibull;
+class Beta;
 class Empirical;
 
 }  // namespace growthuq
@@ -36,7 +37,7 @@ class Empirical;
 
 namespace growthuq {
 
-using Distribution = std::variant<Lognormal, Normal, TruncatedNormal, Uniform, Gamma, Weibull, Empirical>;
+using Distribution = std::variant<Lognormal, Normal, TruncatedNormal, Uniform, Gamma, Weibull, Beta, Empirical>;
 
 double pdf(const Distribution& distribution, double x);
 double cdf(const Distribution& distribution, double x);
@@ -47,7 +48,7 @@ std::string describe(const Distribution& distribution);
 
 // The parameters describe() prints, by name and unrounded, in its order: lognormal mu, sigma;
 // normal mean, sd; truncated_normal mean, sd, lower, upper; uniform lower, upper; gamma and
-// weibull shape, scale; empirical n, min, max. For files that keep fits as numbers (results.h5).
+// weibull shape, scale; beta alpha, beta, upper; empirical n, min, max. For files that keep fits as numbers (results.h5).
 std::vector<std::pair<std::string, double>> parameter_values(const Distribution& distribution);
 
 }  // namespace growthuq
