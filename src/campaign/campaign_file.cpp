@@ -16,12 +16,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string> split_list(std::string_view text) {
+// The items of a comma-separated list (outputs, formats, --lines). An item listed twice is
+// refused: a line given twice would be run twice into the same files, an output twice would
+// give two summary rows of one quantity.
+std::vector<std::string> split_list(std::string_view text, std::string_view location, std::string_view key) {
   std::vector<std::string> items;
   std::size_t start = 0;
   while (start <= text.size()) {
     const std::size_t comma = std::min(text.find(',', start), text.size());
     const std::string_view item = trim(text.substr(start, comma - start));
+    if (!item.empty() && std::find(items.begin(), items.end(), item) != items.end()) {
+      throw_bad_value(location, key, text, "each item once ('" + std::string(item) + "' is listed twice)");
+    }
     if (!item.empty()) items.emplace_back(item);
     start = comma + 1;
   }
@@ -40,8 +46,13 @@ class SectionReader {
     return section_.find(key);
   }
 
+  // An empty value is as good as none: `name =` would make a nameless campaign, `output_dir =`
+  // the current folder.
   const IniEntry& required(std::string_view key) {
-    if (const IniEntry* entry = optional(key)) return *entry;
+    if (const IniEntry* entry = optional(key)) {
+      if (entry->value.empty()) throw_bad_value(location(*entry), entry->key, entry->value, "a value (it is required)");
+      return *entry;
+    }
     throw InputError(document_.location(section_.line),
                      "[" + section_.name + "] lacks the required key '" + std::string(key) + "'");
   }
@@ -102,7 +113,7 @@ void read_campaign_section(const IniDocument& document, const IniSection& sectio
   const IniEntry& samples = reader.required("samples");
   campaign.samples = parse_count(samples.value, reader.location(samples), samples.key, 1, 4294967295ULL);
   const IniEntry& outputs = reader.required("outputs");
-  campaign.outputs = split_list(outputs.value);
+  campaign.outputs = split_list(outputs.value, reader.location(outputs), outputs.key);
   if (campaign.outputs.empty()) throw_bad_value(reader.location(outputs), outputs.key, outputs.value, "a list such as 'p, E, eta, v'");
   for (const std::string& output : campaign.outputs) {
     if (find_quantity(output) == nullptr) {
@@ -239,7 +250,7 @@ const CampaignLine* Campaign::find_line(std::string_view line_name) const {
 
 OutputFormats parse_formats(std::string_view text, std::string_view location, std::string_view key) {
   OutputFormats formats{false, false};
-  const auto items = split_list(text);
+  const auto items = split_list(text, location, key);
   for (const std::string& item : items) {
     if (item == "csv") {
       formats.csv = true;
@@ -308,8 +319,7 @@ Campaign parse_campaign(const std::string& text, const std::string& path) {
 }
 
 Campaign read_campaign(const std::string& path) {
-  std::error_code error;
-  if (!fs::is_regular_file(path, error)) throw InputError(path, "no such campaign file");
+  // read_text_file names what is wrong: no such file, a directory, a file without end.
   return parse_campaign(detail::read_text_file(path), path);
 }
 
@@ -325,7 +335,7 @@ void apply_overrides(Campaign& campaign, const CampaignOverrides& overrides) {
   if (overrides.formats) campaign.formats = parse_formats(*overrides.formats, "command line", "--formats");
   if (overrides.lines) {
     std::vector<CampaignLine> selected;
-    for (const std::string& name : split_list(*overrides.lines)) {
+    for (const std::string& name : split_list(*overrides.lines, "command line", "--lines")) {
       const CampaignLine* line = campaign.find_line(name);
       if (line == nullptr) {
         std::string known;

@@ -1,10 +1,12 @@
 #include "campaign/campaign_outputs.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <optional>
+#include <sstream>
 #include <thread>
 #include <utility>
 
@@ -17,9 +19,11 @@
 #include "campaign/campaign_report.hpp"
 #include "campaign/checkpoint.hpp"
 #include "campaign/csv_results.hpp"
+#include "campaign/output_lock.hpp"
 #include "growthuq/campaign/data_uncertainty.hpp"
 #include "campaign/raw_data_outputs.hpp"
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/printable.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
 #include "growthuq/io/results_h5.hpp"
@@ -51,31 +55,55 @@ std::string shell_word(const std::string& path) {
   return quoted + "'";
 }
 
-// Returns whether the directory was created by this run.
-bool prepare_output_directory(const Campaign& campaign, Overwrite overwrite) {
+// The result files of a run, in the order the commit moves them into the output directory:
+// summary.csv last, so a directory with a summary.csv holds the whole set.
+constexpr std::array<const char*, 4> result_names{results_h5_name, samples_csv_name, data_uncertainty_csv_name, summary_csv_name};
+
+// Where a run writes its results until they are all complete (output_dir/staging).
+std::string staging_directory(const std::string& output_dir) { return in_directory(output_dir, staging_name); }
+
+// Locks the output directory (creating it if needed) and checks it. Returns whether the
+// directory was created by this run.
+bool prepare_output_directory(const Campaign& campaign, Overwrite overwrite, std::optional<OutputDirectoryLock>& lock) {
   const std::string& directory = campaign.output_dir;
   std::error_code error;
+  // Locked before anything is said about what it holds: the checkpoint of a live run is no
+  // interrupted run to resume.
+  if (directory != "-" && fs::is_directory(directory, error)) lock.emplace(directory);
+  check_output_directory(campaign, overwrite);
   if (fs::exists(directory, error)) {
-    if (overwrite == Overwrite::refuse && has_checkpoint(directory)) {
-      throw InputError(directory, "holds an interrupted run; finish it with: growthuq run --resume " + shell_word(directory) +
-                                      " (or pass --force to start it again)");
-    }
-    if (overwrite == Overwrite::refuse) {
-      throw InputError(directory, "output directory already exists; choose another (--out DIR) or pass --force to replace its results");
-    }
-    if (!fs::is_directory(directory, error)) throw InputError(directory, "exists and is not a directory");
-    // Every file a run writes or removes there is a regular file or absent, so neither the
-    // writers nor the removals below touch a device, FIFO or folder of that name.
-    for (const char* name : {samples_csv_name, summary_csv_name, results_h5_name, data_uncertainty_csv_name}) {
-      check_can_write(in_directory(directory, name), Overwrite::allow);
-    }
-    if (!campaign.formats.csv) fs::remove(in_directory(directory, samples_csv_name), error);
-    if (!campaign.formats.hdf5) fs::remove(in_directory(directory, results_h5_name), error);
+    fs::remove_all(staging_directory(directory), error);  // what a killed run had staged
     return false;
   }
   fs::create_directories(directory, error);
-  if (error) throw InputError(directory, "cannot create the output directory: " + error.message());
+  if (error) throw WriteError(directory, "cannot create the output directory: " + error.message());
+  lock.emplace(directory);
   return true;
+}
+
+// The multi-file commit: the old results are removed, then the staged ones moved in (summary.csv
+// last), then the staging folder removed. The directory never holds new results beside old
+// ones; a kill in between leaves part of the new set, the rest staged and the checkpoint, and
+// --resume writes the set again.
+void commit_staged_results(const std::string& output_dir) {
+  const std::string staging = staging_directory(output_dir);
+  std::error_code error;
+  for (const char* name : result_names) {
+    const std::string path = in_directory(output_dir, name);
+    check_can_write(path, Overwrite::allow);  // (only regular files are removed)
+    if (fs::remove(path, error); error) throw WriteError(path, "cannot remove the previous run's result: " + error.message());
+  }
+  for (const char* name : result_names) {
+    const std::string staged = in_directory(staging, name);
+    if (fs::exists(staged, error)) move_into_place(staged, in_directory(output_dir, name));
+  }
+  fs::remove_all(staging, error);
+}
+
+// The coordinator's stop request (0: none), on every process.
+int coordinator_stop_request(Pool& pool) {
+  const std::string request = pool.broadcast(pool.is_coordinator() ? std::to_string(pool.stop_requested()) : std::string());
+  return std::stoi(request);
 }
 
 // The samples.csv columns: every line's inputs (first seen first), then the computed outputs.
@@ -122,10 +150,19 @@ class OutputObserver final : public RunObserver {
     if (writer_.joinable()) writer_.join();
   }
 
+  // The writers, in the staging folder (commit_staged_results moves their files out).
   void open(const PreparedCampaign& campaign) {
     const Campaign& c = campaign.campaign();
-    if (c.formats.csv) samples_.emplace(in_directory(c.output_dir, samples_csv_name), sample_columns(campaign));
-    if (c.formats.hdf5) h5_.emplace(in_directory(c.output_dir, results_h5_name), Overwrite::allow);
+    std::error_code error;
+    fs::create_directories(staging_, error);
+    if (error) throw WriteError(staging_, "cannot create the folder the results are written to: " + error.message());
+    if (c.formats.csv) samples_.emplace(in_directory(staging_, samples_csv_name), sample_columns(campaign));
+    if (c.formats.hdf5) {
+      h5_.emplace(in_directory(staging_, results_h5_name), Overwrite::allow);
+      std::vector<std::string> names;  // the campaign's order; the lines run with the reference line first
+      for (const CampaignLine& line : c.lines) names.push_back(line.name);
+      h5_->declare_lines(names);
+    }
   }
 
   void line_started(const PreparedLine& line, std::size_t samples) override {
@@ -144,7 +181,7 @@ class OutputObserver final : public RunObserver {
     // results.h5 as inf and summary.csv as an empty cell, which reads as "undefined".
     for (const QuantitySummary& summary : statistics.summaries) require_finite_statistics(summary, campaign_.campaign().path);
     progress_.line_finished();
-    for (const std::string& warning : warnings) log_ << "growthuq run: line '" << result.name << "': " << warning << "\n";
+    for (const std::string& warning : warnings) log_ << printable("growthuq run: line '" + result.name + "': " + warning) << "\n";
     summaries_.insert(summaries_.end(), statistics.summaries.begin(), statistics.summaries.end());
     line_reports_ += "\nline " + result.name + ": input rank correlation (Spearman)\n" + format_input_correlation(result) +
                      format_line_analysis(statistics.analysis);
@@ -160,13 +197,14 @@ class OutputObserver final : public RunObserver {
     });
   }
 
-  void finish(const CampaignOutcome& outcome, DataUncertaintyResult uncertainty, const OutputSettings& settings,
-              std::ostream& report) {
+  // Every result file complete in the staging folder; returns the report for stdout.
+  std::string finish(const CampaignOutcome& outcome, DataUncertaintyResult uncertainty, const OutputSettings& settings) {
     wait_for_writer();
     const Campaign& c = campaign_.campaign();
     if (samples_) samples_->finish();
-    write_file_atomically(in_directory(c.output_dir, summary_csv_name), summary_csv_text(summaries_), Overwrite::allow);
-    const std::string raw_data_report = write_raw_data_outputs(campaign_, summaries_, std::move(uncertainty), h5_ ? &*h5_ : nullptr);
+    write_file_atomically(in_directory(staging_, summary_csv_name), summary_csv_text(summaries_), Overwrite::allow);
+    const std::string raw_data_report =
+        write_raw_data_outputs(campaign_, summaries_, std::move(uncertainty), h5_ ? &*h5_ : nullptr, staging_);
     if (h5_) {
       CampaignMetadata metadata;
       metadata.campaign_text = c.text;
@@ -178,6 +216,7 @@ class OutputObserver final : public RunObserver {
       metadata.samples_per_line = c.samples;
       h5_->finish(metadata);
     }
+    std::ostringstream report;
     report << "campaign '" << c.name << "': " << c.lines.size() << " lines x " << c.samples << " samples, seed " << c.seed
            << ", results in " << c.output_dir << "\n\n"
            << format_summary_table(summaries_);
@@ -186,17 +225,25 @@ class OutputObserver final : public RunObserver {
              << ": its predicted median v equals the median of its v_exp, "
              << format_significant(to_um_per_s(campaign_.experimental_median_growth_rate())) << " um/s)\n";
     }
-    report << line_reports_ << raw_data_report;
+    if (settings.line_reports) {
+      report << line_reports_ << raw_data_report;
+    } else {
+      report << "\n(per-line reports not printed: --summary-only)\n";
+    }
+    return report.str();
   }
 
   const std::vector<QuantitySummary>& summaries() const { return summaries_; }
 
-  // After a failure or a stop: closes the writers, which remove their .partial files.
-  void abandon() {
+  // After a failure or a stop: closes the writers, which remove their .partial files, and
+  // removes what was staged (coordinator).
+  void abandon(bool coordinator) {
     progress_.stopped();
     if (writer_.joinable()) writer_.join();
     samples_.reset();
     h5_.reset();
+    std::error_code ignored;
+    if (coordinator) fs::remove_all(staging_, ignored);
   }
 
  private:
@@ -208,6 +255,7 @@ class OutputObserver final : public RunObserver {
 
   const PreparedCampaign& campaign_;
   std::ostream& log_;
+  std::string staging_ = staging_directory(campaign_.campaign().output_dir);
   Progress progress_;
   std::optional<SamplesCsvWriter> samples_;
   std::optional<ResultsH5Writer> h5_;
@@ -217,19 +265,53 @@ class OutputObserver final : public RunObserver {
   std::exception_ptr failure_;
 };
 
+// A failed run leaves no output directory of its own making behind (an empty one would only
+// make the rerun need --force); the results of a forced directory stay as they were (nothing
+// was committed). A resume would fail the same way, so a new run's checkpoint goes too; a
+// resumed run keeps the chunks an earlier run paid for. Rethrows the exception being handled.
+[[noreturn]] void throw_after_failure(bool starting_checkpoint, bool created, const std::string& directory, Pool& pool) {
+  std::error_code ignored;
+  if (starting_checkpoint && pool.is_coordinator()) fs::remove_all(checkpoint_directory(directory), ignored);
+  if (created) fs::remove(directory, ignored);
+  throw;
+}
+
 }  // namespace
+
+void check_output_directory(const Campaign& campaign, Overwrite overwrite) {
+  const std::string& directory = campaign.output_dir;
+  if (directory == "-") {
+    throw InputError(directory, "standard output cannot take a campaign's results (a folder of files): expected a "
+                                "directory name (./- for one named -)");
+  }
+  std::error_code error;
+  if (!fs::exists(directory, error)) return;
+  if (overwrite == Overwrite::refuse && has_checkpoint(directory)) {
+    throw InputError(directory, "holds an interrupted run; finish it with: growthuq run --resume " + shell_word(directory) +
+                                    " (or pass --force to start it again)");
+  }
+  if (overwrite == Overwrite::refuse) {
+    throw InputError(directory, "output directory already exists; choose another (--out DIR) or pass --force to replace its results");
+  }
+  if (!fs::is_directory(directory, error)) throw InputError(directory, "exists and is not a directory");
+  // Every file a run writes or removes there is a regular file or absent, so neither the
+  // writers nor the commit's removals touch a device, FIFO or folder of that name.
+  for (const char* name : result_names) check_can_write(in_directory(directory, name), Overwrite::allow);
+}
 
 CampaignOutcome run_campaign_with_outputs(const PreparedCampaign& campaign, Pool& pool, const OutputSettings& settings,
                                           std::ostream& report, std::ostream& log) {
   OutputObserver observer(campaign, settings, log);
   const bool resuming = settings.checkpointing == Checkpointing::resume;
   bool created = false;
+  std::optional<OutputDirectoryLock> lock;  // the coordinator's, for the whole run
   std::unique_ptr<RunCheckpoint> checkpoint;
   bool starting_checkpoint = false;
   CampaignOutcome outcome;
+  const std::string& directory = campaign.campaign().output_dir;
   try {
     on_coordinator(pool, [&] {
-      created = prepare_output_directory(campaign.campaign(), resuming ? Overwrite::allow : settings.overwrite);
+      created = prepare_output_directory(campaign.campaign(), resuming ? Overwrite::allow : settings.overwrite, lock);
       observer.open(campaign);
     });
     if (settings.checkpointing == Checkpointing::start) {
@@ -240,13 +322,19 @@ CampaignOutcome run_campaign_with_outputs(const PreparedCampaign& campaign, Pool
     outcome.run = run_campaign_lines(campaign, pool, observer, checkpoint.get());
     // All processes run the bootstrap while the coordinator's writer may still write the last line.
     DataUncertaintyResult uncertainty = estimate_data_uncertainty(campaign, pool, settings.progress, log);
+    std::string report_text;
+    on_coordinator(pool, [&] { report_text = observer.finish(outcome, std::move(uncertainty), settings); });
+    // A stop asked for while the results were written is not ignored: they stay staged and are
+    // dropped, the checkpoint is kept, and --resume writes them again.
+    if (const int stop = coordinator_stop_request(pool)) throw PoolInterrupted(stop);
     on_coordinator(pool, [&] {
-      observer.finish(outcome, std::move(uncertainty), settings, report);
+      commit_staged_results(directory);
       if (checkpoint) checkpoint->remove();
+      report << report_text;
     });
   } catch (const PoolInterrupted& interrupted) {
-    observer.abandon();
-    const std::string& directory = campaign.campaign().output_dir;
+    observer.abandon(pool.is_coordinator());
+    lock.reset();
     if (!checkpoint) {
       std::error_code ignored;
       if (created) fs::remove(directory, ignored);
@@ -256,19 +344,20 @@ CampaignOutcome run_campaign_with_outputs(const PreparedCampaign& campaign, Pool
     throw RunInterrupted(interrupted.reason(), "interrupted after " + std::to_string(checkpoint->samples_held()) + " of " +
                                                    std::to_string(total) + " samples; finish with: growthuq run --resume " +
                                                    shell_word(directory));
-  } catch (...) {
-    // A failed run leaves no output directory of its own making behind (an empty one would
-    // only make the rerun need --force); finished files of a forced directory stay. A resume
-    // would fail the same way, so a new run's checkpoint goes too; a resumed run keeps the
-    // chunks an earlier run paid for.
-    observer.abandon();
+  } catch (const WriteError& error) {
+    // A full disk (or a quota, a read-only remount): the checkpoint's chunks are still good, so
+    // they stay, whoever started them, for a resume once there is room.
+    observer.abandon(pool.is_coordinator());
     checkpoint.reset();
-    std::error_code ignored;
-    if (starting_checkpoint && pool.is_coordinator()) {
-      fs::remove_all(checkpoint_directory(campaign.campaign().output_dir), ignored);
-    }
-    if (created) fs::remove(campaign.campaign().output_dir, ignored);
-    throw;
+    lock.reset();
+    if (!pool.is_coordinator() || !has_checkpoint(directory)) throw_after_failure(starting_checkpoint, created, directory, pool);
+    throw WriteError(error.location(), error.problem() + "; the checkpoint keeps the finished chunks: make room, then finish "
+                                                         "with: growthuq run --resume " + shell_word(directory));
+  } catch (...) {
+    observer.abandon(pool.is_coordinator());
+    checkpoint.reset();
+    lock.reset();
+    throw_after_failure(starting_checkpoint, created, directory, pool);
   }
   outcome.summaries = observer.summaries();
   return outcome;

@@ -28,6 +28,7 @@ enum class Checkpointing {
 struct OutputSettings {
   Overwrite overwrite = Overwrite::refuse;  // allow: reuse an existing output directory (--force)
   ProgressMode progress = ProgressMode::none;
+  bool line_reports = true;                 // false: the report ends after the summary table and kappa (--summary-only)
   std::string command_line;                 // stored in results.h5 (when resuming: the original one)
   Checkpointing checkpointing = Checkpointing::off;
   CheckpointManifest manifest;              // with Checkpointing::start (the coordinator writes it)
@@ -55,16 +56,29 @@ struct CampaignOutcome {
 inline constexpr const char* samples_csv_name = "samples.csv";
 inline constexpr const char* summary_csv_name = "summary.csv";
 inline constexpr const char* results_h5_name = "results.h5";
+// The folder in the output directory where a run writes its results until all are complete.
+inline constexpr const char* staging_name = "staging";
 
-// Every process calls it. Rank 0 checks and creates campaign.output_dir before any sampling
-// (InputError naming it when it exists and overwrite is refuse; with allow, result files of
-// formats not written this time are removed so the folder never mixes two runs), streams the
-// lines, writes `report` (stdout) and `log` (stderr: progress, design warnings). When the run
-// fails (e.g. kappa cannot be calibrated because no reference tube grows), the .partial files
-// are removed and so is the output directory if this run created it (a new checkpoint too; a
-// resumed one stays). When the pool is stopped, the .partial files are removed, the output
-// directory and its checkpoint kept, and RunInterrupted raised. A checkpoint is removed when
-// the run completes.
+// What a run checks of campaign.output_dir before it creates it or writes there, without
+// touching it (`growthuq check`): InputError naming it when it exists and overwrite is refuse
+// (suggesting --resume when it holds an interrupted run), when it exists and is no directory,
+// when a result file there would replace something that is not a regular file, or when it is
+// "-" (standard output, which other commands take for a result file).
+void check_output_directory(const Campaign& campaign, Overwrite overwrite);
+
+// Every process calls it. Rank 0 creates campaign.output_dir if needed, locks it for the whole
+// run (output_lock.hpp: a second live run is refused naming this one) and checks it before any
+// sampling (InputError naming it when it exists and overwrite is refuse), streams the lines
+// into output_dir/staging, writes `report` (stdout) and `log` (stderr: progress, design
+// warnings). Only when every result file is complete in staging are the old results removed and
+// the new ones moved in (summary.csv last; result files of formats not written this time are
+// removed too), so the folder never mixes two runs. When the run fails (e.g. kappa cannot be
+// calibrated because no reference tube grows), the .partial files and staging are removed and
+// so is the output directory if this run created it (a new checkpoint too; a resumed one
+// stays); a WriteError (a full disk) keeps the checkpoint either way, its message saying how to
+// finish. When the pool is stopped, also during the final writes, nothing is committed, the
+// output directory and its checkpoint are kept, and RunInterrupted raised. A checkpoint is
+// removed when the run completes.
 CampaignOutcome run_campaign_with_outputs(const PreparedCampaign& campaign, Pool& pool, const OutputSettings& settings,
                                           std::ostream& report, std::ostream& log);
 

@@ -18,6 +18,7 @@
 #include "campaign/line_source.hpp"
 #include "campaign/shared_raw_fits.hpp"
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
 #include "growthuq/growth/kappa.hpp"
 #include "growthuq/mechanics/mechanical_correlation.hpp"
@@ -62,6 +63,21 @@ std::optional<RankCorrelationFile> restricted(const std::string& path, const std
   return result;
 }
 
+// The measured k is the tube and the sensor in series, so it stays below the sensor's k_sys
+// (instrument.hpp). A line whose median k is not below it has at least half its draws flagged
+// and its statistics (and kappa, a nan) from the rest: refused, naming both figures.
+void require_sensor_stiffer_than_line(const LineDistributions& line, const Instrument& instrument, const std::string& location) {
+  const LineVariable* k = line.find("k");
+  const double k_sys = instrument.sensor_stiffness_N_per_m;
+  if (k == nullptr || std::isinf(k_sys)) return;
+  const double median = quantile(k->distribution, 0.5) * k->unit->to_si;
+  if (median < k_sys) return;
+  throw InputError(location, "line '" + line.name + "' (" + line.path + "): median measured stiffness k = " +
+                                 format_double(median) + " N/m is not below [instrument] sensor_stiffness_N_per_m = " +
+                                 format_double(k_sys) +
+                                 ": expected a sensor stiffer than the tubes it measures (k_sys in N/m, or the line's k unit?)");
+}
+
 }  // namespace
 
 std::uint64_t physics_correlation_seed(std::uint64_t campaign_seed, std::string_view line) {
@@ -86,6 +102,7 @@ PreparedCampaign::PreparedCampaign(Campaign campaign, Pool* pool, ProgressMode p
     line.campaign_line = campaign_line;
     const CurveFitter fit_curves = pool != nullptr ? shared_curve_fitter(*pool, campaign_line.name, progress, *log) : CurveFitter();
     line.distributions = load_line_distributions(campaign_line, campaign_.instrument, line.raw_fit, fit_curves);
+    require_sensor_stiffer_than_line(line.distributions, campaign_.instrument, file_location(campaign_.path, campaign_line.line));
     const std::vector<std::string> inputs = variable_names(line.distributions);
     try {
       line.plan = plan_evaluation(available, inputs, campaign_.outputs);

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "growthuq/core/error.hpp"
+#include "growthuq/io/output_file.hpp"
 #include "growthuq/sampling/random_stream.hpp"
 
 namespace growthuq {
@@ -139,12 +140,12 @@ std::vector<double> ChunkLogReader::values(const ChunkRecord& record) {
 ChunkLogWriter::ChunkLogWriter(std::string path, std::uint64_t keep_bytes) : path_(std::move(path)) {
   if (keep_bytes == 0) {
     file_ = std::fopen(path_.c_str(), "wb");
-    if (file_ == nullptr) throw InputError(path_, "cannot create the checkpoint's chunk log: " + system_reason());
+    if (file_ == nullptr) throw WriteError(path_, "cannot create the checkpoint's chunk log: " + system_reason());
     const std::array<char, header_bytes> header = file_header();
     if (std::fwrite(header.data(), 1, header.size(), file_) != header.size() || std::fflush(file_) != 0) {
       const std::string reason = system_reason();
       close();
-      throw InputError(path_, "cannot write the checkpoint's chunk log: " + reason);
+      throw WriteError(path_, "cannot write the checkpoint's chunk log: " + reason);
     }
     return;
   }
@@ -168,7 +169,7 @@ void ChunkLogWriter::append(std::uint32_t line, ChunkRange range, std::span<cons
   words[4] = record_checksum(std::span(words).first(4), values);
   if (std::fwrite(words.data(), 8, words.size(), file_) != words.size() ||
       std::fwrite(values.data(), 8, values.size(), file_) != values.size() || std::fflush(file_) != 0) {
-    throw InputError(path_, "cannot write the checkpoint (is the disk full?): " + system_reason());
+    throw WriteError(path_, "cannot write the checkpoint (is the disk full?): " + system_reason());
   }
 }
 

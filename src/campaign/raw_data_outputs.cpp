@@ -7,6 +7,7 @@
 
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
+#include "growthuq/distributions/distribution.hpp"
 #include "growthuq/io/csv.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "growthuq/rawdata/raw_line_fit.hpp"
@@ -30,11 +31,37 @@ std::string padded(const std::string& text, std::size_t width) {
   return text.size() >= width ? text + " " : text + std::string(width - text.size(), ' ');
 }
 
+// A numeric column of pure numbers (counts, likelihoods, test statistics).
+ExtraColumn pure_number(const std::string& name) { return ExtraColumn{.name = name, .unit = "1"}; }
+
+// The fitted laws' parameters as numbers, one row per variable, family tried and parameter
+// (the `parameters` text of the fit tables rounds them to 6 digits, for reading).
+void write_fit_parameters(ResultsH5Writer& h5, const std::string& group, const RawLineFit& fit) {
+  ExtraColumn variable{"variable"}, unit{"unit"}, family{"family"}, chosen = pure_number("chosen"), parameter{"parameter"},
+      value{"value"};
+  for (const VariableFit& v : fit.variables) {
+    for (const FamilyFit& candidate : v.candidates) {
+      if (!candidate.result) continue;
+      for (const auto& [name, number] : parameter_values(candidate.result->distribution)) {
+        variable.text.push_back(v.variable);
+        unit.text.emplace_back(v.unit->symbol);
+        family.text.emplace_back(to_string(candidate.family));
+        chosen.integer.push_back(candidate.family == v.best().family ? 1 : 0);
+        parameter.text.push_back(name);
+        value.real.push_back(number);
+      }
+    }
+  }
+  h5.write_table(group + "fit_parameters", {variable, unit, family, chosen, parameter, value});
+}
+
 void write_fits(ResultsH5Writer& h5, const std::string& line, const RawLineFit& fit) {
-  ExtraColumn variable{"variable"}, unit{"unit"}, family{"family"}, parameters{"parameters"}, n{"n"},
-      log_likelihood{"log_likelihood"}, aic{"aic"}, ks{"ks"}, ad{"ad"}, source{"source"};
-  ExtraColumn c_variable{"variable"}, c_family{"family"}, c_status{"status"}, c_parameters{"parameters"}, c_n{"n"},
-      c_log_likelihood{"log_likelihood"}, c_aic{"aic"}, c_delta{"delta_aic"}, c_ks{"ks"}, c_ad{"ad"}, c_reason{"reason"};
+  ExtraColumn variable{"variable"}, unit{"unit"}, family{"family"}, parameters{"parameters"}, n = pure_number("n"),
+      log_likelihood = pure_number("log_likelihood"), aic = pure_number("aic"), ks = pure_number("ks"),
+      ad = pure_number("ad"), source{"source"};
+  ExtraColumn c_variable{"variable"}, c_family{"family"}, c_status{"status"}, c_parameters{"parameters"},
+      c_n = pure_number("n"), c_log_likelihood = pure_number("log_likelihood"), c_aic = pure_number("aic"),
+      c_delta = pure_number("delta_aic"), c_ks = pure_number("ks"), c_ad = pure_number("ad"), c_reason{"reason"};
   for (const VariableFit& v : fit.variables) {
     const FitResult& best = v.best();
     variable.text.push_back(v.variable);
@@ -66,15 +93,20 @@ void write_fits(ResultsH5Writer& h5, const std::string& line, const RawLineFit& 
   h5.write_table(group + "fits", {variable, unit, family, parameters, n, log_likelihood, aic, ks, ad, source});
   h5.write_table(group + "fit_candidates",
                  {c_variable, c_family, c_status, c_parameters, c_n, c_log_likelihood, c_aic, c_delta, c_ks, c_ad, c_reason});
+  write_fit_parameters(h5, group, fit);
 }
 
 void write_relaxation(ResultsH5Writer& h5, const std::string& line, const RawLineFit& fit) {
   const RelaxationFits& relaxation = *fit.relaxation;
   const int terms = relaxation.options.terms;
-  std::vector<ExtraColumn> table{{"curve"}, {"status"}, {"reason"}, {"terms"}, {"tau_fast_s"}, {"tau_mid_s"},
-                                 {"tau_slow_s"}, {"einf_frac"}, {"E0_MPa"}, {"eta_MPa_s"}, {"Er0_MPa"},
-                                 {"tau_slow_se_pct"}, {"rms"}, {"aic"}, {"ramp_time_s"}, {"points"}, {"delta_um"},
-                                 {"p_MPa"}, {"d_um"}, {"h_nm"}, {"rho_um"}};
+  // rms is relative (of E_r / E_r(0), or F / F_peak), so a pure number.
+  std::vector<ExtraColumn> table{
+      {"curve"}, {"status"}, {"reason"}, pure_number("terms"), {.name = "tau_fast_s", .unit = "s"},
+      {.name = "tau_mid_s", .unit = "s"}, {.name = "tau_slow_s", .unit = "s"}, {.name = "einf_frac", .unit = "frac"},
+      {.name = "E0_MPa", .unit = "MPa"}, {.name = "eta_MPa_s", .unit = "MPa s"}, {.name = "Er0_MPa", .unit = "MPa"},
+      {.name = "tau_slow_se_pct", .unit = "%"}, pure_number("rms"), pure_number("aic"), {.name = "ramp_time_s", .unit = "s"},
+      pure_number("points"), {.name = "delta_um", .unit = "um"}, {.name = "p_MPa", .unit = "MPa"},
+      {.name = "d_um", .unit = "um"}, {.name = "h_nm", .unit = "nm"}, {.name = "rho_um", .unit = "um"}};
   ExtraColumn index{"curve_index"}, t{"t_s"}, force{"F_uN"}, fitted{"F_fit_uN"};
   std::vector<std::int32_t> curve_index;
   for (std::size_t c = 0; c < relaxation.curves.size(); ++c) {
@@ -113,10 +145,10 @@ void write_relaxation(ResultsH5Writer& h5, const std::string& line, const RawLin
   }
   const std::string group = "lines/" + line + "/relaxation";
   h5.write_table(group + "/fits", table);
-  h5.write_array(group + "/points/curve_index", curve_index);
-  h5.write_array(group + "/points/t_s", t.real);
-  h5.write_array(group + "/points/F_uN", force.real);
-  h5.write_array(group + "/points/F_fit_uN", fitted.real);
+  h5.write_array(group + "/points/curve_index", curve_index, "1", "point");
+  h5.write_array(group + "/points/t_s", t.real, "s", "point");
+  h5.write_array(group + "/points/F_uN", force.real, "uN", "point");
+  h5.write_array(group + "/points/F_fit_uN", fitted.real, "uN", "point");
   h5.write_attribute(group, "fit", relaxation.options.ramp_aware ? "ramp_aware" : "step");
   h5.write_attribute(group, "terms", static_cast<double>(terms));
   h5.write_attribute(group, "curves_path", fit.raw.relaxation.curves);
@@ -124,8 +156,8 @@ void write_relaxation(ResultsH5Writer& h5, const std::string& line, const RawLin
 
 std::vector<ExtraColumn> uncertainty_table(std::span<const DataUncertainty> rows) {
   std::vector<ExtraColumn> table{{"line"}, {"quantity"}, {"unit"}, {"median"}, {"median_ci_low"}, {"median_ci_high"},
-                                 {"data_ci_low"}, {"data_ci_high"}, {"data_sd"}, {"replicates"}, {"failed_replicates"},
-                                 {"samples_per_replicate"}};
+                                 {"data_ci_low"}, {"data_ci_high"}, {"data_sd"}, pure_number("replicates"),
+                                 pure_number("failed_replicates"), pure_number("samples_per_replicate")};
   for (const DataUncertainty& row : rows) {
     table[0].text.push_back(row.line);
     table[1].text.push_back(row.quantity);
@@ -182,7 +214,7 @@ std::string data_uncertainty_csv_text(std::span<const DataUncertainty> rows) {
 }
 
 std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<const QuantitySummary> summaries,
-                                   DataUncertaintyResult uncertainty, ResultsH5Writer* h5) {
+                                   DataUncertaintyResult uncertainty, ResultsH5Writer* h5, const std::string& directory) {
   const Campaign& c = campaign.campaign();
   std::string report;
   for (const PreparedLine& line : campaign.lines()) {
@@ -194,12 +226,8 @@ std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<c
     }
   }
 
-  const std::string csv_path = (std::filesystem::path(c.output_dir) / data_uncertainty_csv_name).string();
-  if (uncertainty.rows.empty()) {
-    std::error_code ignored;  // a --force rerun without the bootstrap leaves no stale file behind
-    std::filesystem::remove(csv_path, ignored);
-    return report;
-  }
+  const std::string csv_path = (std::filesystem::path(directory) / data_uncertainty_csv_name).string();
+  if (uncertainty.rows.empty()) return report;  // (the commit removes a stale one of a --force rerun)
   for (DataUncertainty& row : uncertainty.rows) {
     for (const QuantitySummary& summary : summaries) {
       if (summary.line == row.line && summary.quantity == row.quantity) {
@@ -224,7 +252,7 @@ std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<c
       h5->write_table(group + "/data_uncertainty", uncertainty_table(rows));
       for (const DataUncertainty& row : rows) {
         const std::string path = group + "/data_uncertainty_replicates/" + row.quantity;
-        h5->write_array(path, row.replicate_medians);
+        h5->write_array(path, row.replicate_medians, row.unit, "replicate");
         h5->write_attribute(path, "unit", row.unit);
       }
     }

@@ -9,13 +9,18 @@
 //   /lines/<line>/fit_candidates       one row per variable and family tried: variable, family,
 //                                      status ("ok" or "failed"), parameters, n, log_likelihood,
 //                                      aic, delta_aic (to the chosen family), ks, ad, reason
+//   /lines/<line>/fit_parameters       the laws' parameters as numbers (unrounded), one row per
+//                                      variable, family that fitted and parameter: variable, unit,
+//                                      family, chosen (int64, 1 for the least-AIC family),
+//                                      parameter, value (distribution.hpp parameter_values)
 //   /lines/<line>/relaxation/fits      one row per curve, the columns of `growthuq relax` (curve,
 //                                      status, reason, terms, tau_fast_s, tau_mid_s, tau_slow_s,
 //                                      einf_frac, E0_MPa, eta_MPa_s, Er0_MPa, tau_slow_se_pct, rms,
 //                                      aic, ramp_time_s, points) and the tube sheet (delta_um,
 //                                      p_MPa, d_um, h_nm, rho_um); group attributes fit ("step" or
 //                                      "ramp_aware"), terms, curves_path
-//   /lines/<line>/relaxation/points/   the curves in long format: curve_index (int32, row of the
+//   /lines/<line>/relaxation/points/   the curves in long format on the dimension `point`:
+//                                      curve_index (int32, row of the
 //                                      fits table), t_s, F_uN (data), F_fit_uN (the fitted model at
 //                                      the point, relaxation/analysis.hpp fitted_force; NaN before
 //                                      the force maximum for the step fit)
@@ -25,7 +30,9 @@
 //                                      replicates, failed_replicates, samples_per_replicate
 //                                      (attribute method); also under /lines/<line>/data_uncertainty
 //   /lines/<line>/data_uncertainty_replicates/<quantity>   float64, the successful replicates'
-//                                      medians (attribute unit), for plots and other intervals
+//                                      medians (attributes unit and units, dimension replicate),
+//                                      for plots and other intervals
+// Every table has the attribute column_units (ExtraColumn::unit of each member).
 #pragma once
 
 #include <span>
@@ -40,12 +47,12 @@ namespace growthuq {
 
 inline constexpr const char* data_uncertainty_csv_name = "data_uncertainty.csv";
 
-// Writes what is above (h5 may be null: no results.h5 this run; data_uncertainty.csv goes to the
-// campaign's output directory) and returns the report text for stdout (empty without raw lines).
+// Writes what is above (h5 may be null: no results.h5 this run; data_uncertainty.csv goes to
+// `directory`, where the run stages its results) and returns the report text for stdout (empty without raw lines).
 // `summaries` are the campaign's rows of summary.csv, `uncertainty` the bootstrap's result
 // (estimate_data_uncertainty; no rows when the campaign has none).
 std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<const QuantitySummary> summaries,
-                                   DataUncertaintyResult uncertainty, ResultsH5Writer* h5);
+                                   DataUncertaintyResult uncertainty, ResultsH5Writer* h5, const std::string& directory);
 
 // The data-uncertainty rows as CSV text (the columns of /data_uncertainty above).
 std::string data_uncertainty_csv_text(std::span<const DataUncertainty> rows);

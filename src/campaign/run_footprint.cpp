@@ -24,13 +24,6 @@ std::uint64_t line_bytes_per_sample(const RunShape& shape) {
   return 12 * shape.largest_inputs + 8 * shape.largest_outputs + 1;
 }
 
-// "44.9 GB"
-std::string gigabytes(std::uint64_t bytes) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
-  return text;
-}
-
 // The largest samples per line whose estimate stays within `budget`, rounded down to two
 // significant digits (a count to type, not to the sample; 0 when none fits).
 std::uint64_t largest_fitting(std::uint64_t budget, std::uint64_t fixed, std::uint64_t per_sample) {
@@ -41,7 +34,21 @@ std::uint64_t largest_fitting(std::uint64_t budget, std::uint64_t fixed, std::ui
   return exact / step * step;
 }
 
+// "44.9 GB"
+std::string gigabytes(std::uint64_t bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
+  return text;
+}
+
 }  // namespace
+
+std::string readable_size(std::uint64_t bytes) {
+  if (bytes >= 1'000'000'000) return gigabytes(bytes);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f MB", static_cast<double>(bytes) / 1e6);
+  return text;
+}
 
 RunShape run_shape(const PreparedCampaign& campaign, bool checkpoint) {
   RunShape shape;
@@ -111,6 +118,12 @@ std::optional<std::uint64_t> available_disk_bytes(const std::string& directory) 
   while (!fs::exists(at, error) && at.has_parent_path() && at.parent_path() != at) at = at.parent_path();
   struct statvfs space {};
   if (statvfs(at.c_str(), &space) != 0) return std::nullopt;
+  // No blocks at all: /proc, /sys and their kind keep no files, and their "0 bytes free" would
+  // read as a full disk.
+  if (space.f_blocks == 0) {
+    throw InputError(directory.empty() ? at.string() : directory,
+                     "is on a pseudo file system that stores no files (such as /proc or /sys): expected a place on a disk");
+  }
   return static_cast<std::uint64_t>(space.f_bavail) * space.f_frsize;
 }
 

@@ -57,11 +57,16 @@ RunFootprint estimate_run_footprint(const RunShape& shape);
 // bytes per sample, plus 40 MB and the block pool; disk its CSV text, about 19 bytes per value.
 RunFootprint estimate_design_footprint(std::size_t samples, std::size_t variables);
 
+// "12.3 MB" below a gigabyte, "44.9 GB" (as require_room's messages say it) from one on.
+std::string readable_size(std::uint64_t bytes);
+
 // MemAvailable of /proc/meminfo (what can be allocated without swapping), if readable.
 std::optional<std::uint64_t> available_memory_bytes();
 
 // Free space for an unprivileged writer on the file system that holds `directory` (or its
-// nearest existing parent), if it can be asked.
+// nearest existing parent; a file to be written there works as well), if it can be asked.
+// InputError naming `directory` when that file system stores no files at all (/proc, /sys: no
+// blocks).
 std::optional<std::uint64_t> available_disk_bytes(const std::string& directory);
 
 // What the machine offers the run: memory for `processes` processes of the run on it, disk in

@@ -4,6 +4,8 @@
 
 #include "growthuq/campaign/campaign_run.hpp"
 #include "campaign/progress.hpp"
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/printable.hpp"
 #include "growthuq/stats/quantity_summary.hpp"
 
 namespace growthuq {
@@ -24,7 +26,7 @@ class SummaryObserver final : public RunObserver {
   void line_done(const LineResult& result, const std::vector<std::string>& warnings) override {
     progress_.line_finished();
     for (const std::string& warning : warnings) {
-      log_ << "growthuq tradeoff: line '" << result.name << "' at " << result.samples() << " samples: " << warning << "\n";
+      log_ << printable("growthuq tradeoff: line '" + result.name + "' at " + std::to_string(result.samples()) + " samples: " + warning) << "\n";
     }
     for (const std::string& output : campaign_.campaign().outputs) {
       for (const ResultColumn& column : result.columns) {

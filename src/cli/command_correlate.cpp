@@ -1,7 +1,6 @@
 // growthuq correlate: the Spearman matrix of (k, h, d, d0) from the forward thin-shell model
 // over physically plausible (p, E, h, d0), written in the matrix CSV format that
 // `growthuq sample --rank-correlation` reads. Ranges come from flags or a config file.
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -15,9 +14,11 @@
 #include "growthuq/core/units.hpp"
 #include "growthuq/correlation/matrix_file.hpp"
 #include "growthuq/io/output_file.hpp"
+#include "io/read_text_file.hpp"
 #include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/mechanics/mechanical_correlation.hpp"
 #include "options.hpp"
+#include "result_output.hpp"
 
 namespace growthuq::cli {
 namespace {
@@ -59,7 +60,7 @@ class Origins {
   // default.
   long config_line(const std::string& key) const {
     if (config_.empty() || from_command_line_.count(key)) return 0;
-    std::ifstream file(config_);
+    std::istringstream file(detail::read_text_file(config_));
     std::string line;
     for (long number = 1; std::getline(file, line); ++number) {
       const std::string_view text = trim(line);
@@ -85,18 +86,18 @@ DrawRange parse_range(const std::string& text, const Origins& origins, const std
   return {*low * unit, *high * unit};
 }
 
-void print_matrix(const MechanicalCorrelation& result) {
-  std::cout << std::left << std::setw(6) << "";
-  for (const std::string& name : result.names) std::cout << std::right << std::setw(10) << name;
-  std::cout << "\n";
+void print_matrix(const MechanicalCorrelation& result, std::ostream& report) {
+  report << std::left << std::setw(6) << "";
+  for (const std::string& name : result.names) report << std::right << std::setw(10) << name;
+  report << "\n";
   for (Eigen::Index a = 0; a < 4; ++a) {
-    std::cout << std::left << std::setw(6) << result.names[static_cast<std::size_t>(a)];
+    report << std::left << std::setw(6) << result.names[static_cast<std::size_t>(a)];
     for (Eigen::Index b = 0; b < 4; ++b) {
       std::ostringstream cell;
       cell << std::fixed << std::setprecision(4) << result.spearman(a, b);
-      std::cout << std::right << std::setw(10) << cell.str();
+      report << std::right << std::setw(10) << cell.str();
     }
-    std::cout << "\n";
+    report << "\n";
   }
 }
 
@@ -119,7 +120,8 @@ int run_correlate(const Arguments& arguments) {
   described.add(ranges);
   described.add_options()
       ("config", po::value(&options.config), "INI-style file of the keys above (key = value); flags override it")
-      ("out", po::value(&options.out), "matrix CSV to write (header k,h,d,d0, one row per variable)")
+      ("out", po::value(&options.out), "matrix CSV to write (header k,h,d,d0, one row per variable); - writes it to "
+                                       "standard output (the report then goes to standard error)")
       ("force", po::bool_switch(&options.force), "overwrite --out if it exists");
   po::variables_map values;
   if (!parse_arguments(arguments, "correlate", "--rho-um R [--p-MPa LOW:HIGH ...] [--config FILE] [--out matrix.csv]",
@@ -136,8 +138,7 @@ int run_correlate(const Arguments& arguments) {
     if (!value.defaulted()) from_command_line.insert(key);
   }
   if (!options.config.empty()) {
-    std::ifstream file(options.config);
-    if (!file) throw InputError(options.config, "cannot open the config file");
+    std::istringstream file(detail::read_text_file(options.config));
     try {
       po::store(po::parse_config_file(file, ranges), values);
       po::notify(values);
@@ -172,23 +173,24 @@ int run_correlate(const Arguments& arguments) {
   const Instrument shell = parse_instrument({entry(options.rho_um, "rho-um"), entry(options.nu, "nu"), {}},
                                             ProbeRadius::required);
   const Overwrite overwrite = options.force ? Overwrite::allow : Overwrite::refuse;
-  if (!options.out.empty()) check_can_write(options.out, overwrite);
+  if (!options.out.empty()) check_result_target(options.out, overwrite);
 
   const MechanicalCorrelation result = mechanical_rank_correlation(draws, shell, command);
   const std::vector<std::string> names(result.names.begin(), result.names.end());
   if (!options.out.empty()) {
-    write_file_atomically(options.out, format_rank_correlation_csv(names, result.spearman), overwrite);
+    write_result(options.out, format_rank_correlation_csv(names, result.spearman), overwrite);
   }
 
-  std::cout << "forward thin-shell model: " << result.drawn << " tubes drawn "
+  std::ostream& report = report_stream(options.out);
+  report << "forward thin-shell model: " << result.drawn << " tubes drawn "
             << (draws.scale == DrawScale::uniform ? "uniformly" : "log-uniformly") << " (p " << options.p_MPa
             << " MPa, E " << options.E_MPa << " MPa, h " << options.h_nm << " nm, d0 " << options.d0_um
             << " um; rho = " << options.rho_um << " um, nu = " << options.nu << ", seed " << draws.seed << ")\n"
             << "  burst (p d0 / (2 h E) > 1/e), dropped: " << result.burst << "\n";
-  if (result.other_dropped > 0) std::cout << "  dropped for another status: " << result.other_dropped << "\n";
-  std::cout << "  kept: " << result.kept << "\n\nSpearman rank correlation\n";
-  print_matrix(result);
-  if (!options.out.empty()) std::cout << "\nwrote " << options.out << "\n";
+  if (result.other_dropped > 0) report << "  dropped for another status: " << result.other_dropped << "\n";
+  report << "  kept: " << result.kept << "\n\nSpearman rank correlation\n";
+  print_matrix(result, report);
+  if (!options.out.empty()) report << "\n" << wrote(options.out) << "\n";
   return 0;
 }
 

@@ -23,6 +23,7 @@
 #include "growthuq/io/output_file.hpp"
 #include "growthuq/mechanics/thin_shell_evaluators.hpp"
 #include "options.hpp"
+#include "result_output.hpp"
 #include "shell_fe_flags.hpp"
 
 namespace growthuq::cli {
@@ -163,6 +164,19 @@ std::optional<MeasuredColumn> input_column(const CsvTable& table, std::string_vi
     found = MeasuredColumn{table.numeric_column(name), &unit};
     found_name = name;
   }
+  // A column named like the quantity with a unit that is not one of its own (h_s, d_mmm) would
+  // be passed through unread, and the outputs that need it left out without a word.
+  const std::string prefix = std::string(quantity_name) + "_";
+  for (const std::string& name : table.header) {
+    if (!name.starts_with(prefix) || (found && name == found_name)) continue;
+    std::string units;
+    for (const Unit& unit : known_units()) {
+      if (unit.dimension == quantity->dimension) units += (units.empty() ? "" : ", ") + column_name(quantity_name, unit);
+    }
+    throw InputError(file_location(table.path, 0), "column '" + name + "' names " + std::string(quantity_name) +
+                                                       " with no unit of " + std::string(to_string(quantity->dimension)) +
+                                                       ": expected one of " + units + " (or rename the column)");
+  }
   return found;
 }
 
@@ -281,16 +295,17 @@ int write_shell_fe_file(const EvalOptions& options, const Instrument& parameters
     cells.emplace_back(to_string(values.inverse.status));
     writer.add_row(cells);
   }
-  write_file_atomically(options.out, writer.text(), overwrite);
-  std::cout << table.rows.size() << (table.rows.size() == 1 ? " tube" : " tubes") << " from " << table.path
+  write_result(options.out, writer.text(), overwrite);
+  std::ostream& report = report_stream(options.out);
+  report << table.rows.size() << (table.rows.size() == 1 ? " tube" : " tubes") << " from " << table.path
             << " through the finite-element shell inverse (" << describe(model) << "; " << instrument_text(options, parameters)
             << "), " << format_double(seconds) << " s\n";
   for (const auto& [status, count] : counts) {
-    std::cout << "  " << std::left << std::setw(28) << to_string(status) << count;
-    if (status != ShellFeStatus::ok) std::cout << "  (" << describe(status) << ")";
-    std::cout << "\n";
+    report << "  " << std::left << std::setw(28) << to_string(status) << count;
+    if (status != ShellFeStatus::ok) report << "  (" << describe(status) << ")";
+    report << "\n";
   }
-  std::cout << "wrote " << options.out << "\n";
+  report << wrote(options.out) << "\n";
   return 0;
 }
 
@@ -303,7 +318,7 @@ int evaluate_file(const EvalOptions& options, const Instrument& parameters, cons
     }
   }
   const Overwrite overwrite = options.force ? Overwrite::allow : Overwrite::refuse;
-  check_can_write(options.out, overwrite);
+  check_result_target(options.out, overwrite);
 
   const CsvTable table = read_csv(options.in);
   SampleBlock block(table.rows.size());
@@ -371,18 +386,19 @@ int evaluate_file(const EvalOptions& options, const Instrument& parameters, cons
     cells.emplace_back(to_string(status));
     writer.add_row(cells);
   }
-  write_file_atomically(options.out, writer.text(), overwrite);
+  write_result(options.out, writer.text(), overwrite);
 
-  std::cout << table.rows.size() << (table.rows.size() == 1 ? " tube" : " tubes") << " from " << table.path << " (rho = " << options.rho_um
+  std::ostream& report = report_stream(options.out);
+  report << table.rows.size() << (table.rows.size() == 1 ? " tube" : " tubes") << " from " << table.path << " (rho = " << options.rho_um
             << " um, nu = " << format_double(parameters.poisson_ratio) << ", k_sys = "
             << (std::isinf(parameters.sensor_stiffness_N_per_m) ? "inf" : options.k_sys + " N/m") << ")"
             << (has_h ? "" : "; no thickness column h_nm: turgor outputs only") << "\n";
   for (const auto& [status, count] : counts) {
-    std::cout << "  " << std::left << std::setw(28) << to_string(status) << count;
-    if (status != SampleStatus::ok) std::cout << "  (" << describe(status) << ")";
-    std::cout << "\n";
+    report << "  " << std::left << std::setw(28) << to_string(status) << count;
+    if (status != SampleStatus::ok) report << "  (" << describe(status) << ")";
+    report << "\n";
   }
-  std::cout << "wrote " << options.out << "\n";
+  report << wrote(options.out) << "\n";
   return 0;
 }
 
@@ -400,9 +416,11 @@ int run_eval(const Arguments& arguments) {
       ("rho-um", po::value(&options.rho_um), "probe radius [um] (required)")
       ("nu", po::value(&options.nu), "Poisson ratio of the wall (default 0.2, as in the published FEM)")
       ("k-sys", po::value(&options.k_sys), "sensor stiffness [N/m] in series with the tube (default: ideal)")
-      ("in", po::value(&options.in), "CSV of tubes: columns k_N_per_m, d_um, d0_um [, h_nm] (other units allowed, e.g. h_um)")
+      ("in", po::value(&options.in), "CSV of tubes: columns k_N_per_m, d_um, d0_um [, h_nm] (other units allowed, e.g. h_um); "
+                                     "- reads standard input")
       ("out", po::value(&options.out), "results CSV: the input columns, p_MPa, E_MPa, alpha_um, phi, lambda, "
-                                       "hoop_stress_MPa, wall_stiffness_N_per_m, status")
+                                       "hoop_stress_MPa, wall_stiffness_N_per_m, status; - writes it to standard "
+                                       "output (the report then goes to standard error)")
       ("force", po::bool_switch(&options.force), "overwrite --out if it exists")
       ("fidelity", po::value(&options.fidelity), "the model inverted: closed_form (default; the thin shell, instant) or "
                                                  "shell_fe (the finite-element shell, seconds per tube; needs h; writes "
@@ -415,7 +433,7 @@ int run_eval(const Arguments& arguments) {
                        "Inverts the thin-shell model for measured tubes: turgor p and decay length alpha from\n"
                        "(k, d, d0), modulus E, hoop stress and wall stiffness E h when h is known.\n"
                        "Valid for 1 < d/d0 <= e (beyond e the wall is past its pressure maximum); other tubes get a\n"
-                       "status, not a number.\n"
+                       "status, not a number.\n\n"
                        "--fidelity shell_fe inverts the finite-element shell instead (src/fe/README.md): p/E and h0 from\n"
                        "the turgid d/d0 and the turgid (measured) h, then E from k over the force window; it needs h.",
                        described, {}, values)) {

@@ -19,6 +19,7 @@
 #include "growthuq/io/csv.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "options.hpp"
+#include "result_output.hpp"
 
 namespace growthuq::cli {
 namespace {
@@ -95,30 +96,32 @@ std::string parameters_of(const Distribution& distribution) {
   return text.substr(open + 1, text.size() - open - 2);
 }
 
-void print_table(const std::vector<FitResult>& fits) {
+void print_table(const std::vector<FitResult>& fits, std::ostream& report) {
   std::size_t width = 12;
   for (const FitResult& fit : fits) width = std::max(width, parameters_of(fit.distribution).size() + 2);
-  std::cout << padded("family", 11) << padded("parameters", width) << padded("logL", 12) << padded("AIC", 12)
+  report << padded("family", 11) << padded("parameters", width) << padded("logL", 12) << padded("AIC", 12)
             << padded("dAIC", 10) << padded("KS D", 10) << "AD A^2\n";
   for (const FitResult& fit : fits) {
-    std::cout << padded(std::string(to_string(fit.family)), 11) << padded(parameters_of(fit.distribution), width)
+    report << padded(std::string(to_string(fit.family)), 11) << padded(parameters_of(fit.distribution), width)
               << padded(number(fit.log_likelihood), 12) << padded(number(fit.aic), 12)
               << padded(number(fit.aic - fits.front().aic), 10) << padded(number(fit.ks_statistic), 10)
               << number(fit.ad_statistic) << "\n";
   }
 }
 
-std::string line_file_text(const FitOptions& options, const Target& target, const FitResult& fit) {
-  const std::string stem = std::filesystem::path(options.write).stem().string();
+// `data` names the table as messages do ("standard input" for -).
+std::string line_file_text(const FitOptions& options, const std::string& data, const Target& target, const FitResult& fit) {
+  // A line file printed on stdout has no file name to name its line after.
+  const std::string stem = is_standard_output(options.write) ? "" : std::filesystem::path(options.write).stem().string();
   LineVariable variable{target.variable, target.unit, fit.distribution,
-                        "maximum-likelihood " + std::string(to_string(fit.family)) + " fit to " + options.data +
+                        "maximum-likelihood " + std::string(to_string(fit.family)) + " fit to " + data +
                             ", column " + options.column + " (n = " + std::to_string(fit.sample_size) +
                             ", AIC " + number(fit.aic) + ", KS D " + number(fit.ks_statistic) + ")",
                         "", 0};
   return "# Written by growthuq fit. Merge the variable section into a plant line's file, or use\n"
          "# this file as it is (it is a complete line file).\n[line]\nname = " +
-         (stem.empty() ? std::string("fitted") : stem) + "\ndescription = " + target.variable + " fitted from " +
-         options.data + "\n\n" + format_line_variable(variable);
+         (stem.empty() ? std::string("fitted") : stem) + "\ndescription = " + target.variable + " fitted from " + data +
+         "\n\n" + format_line_variable(variable);
 }
 
 }  // namespace
@@ -133,7 +136,8 @@ int run_fit(const Arguments& arguments) {
       ("variable", po::value(&options.variable), "measured variable of the column (k, h, d, d0, tau, einf, v_exp) "
                                                  "when its name does not say")
       ("unit", po::value(&options.unit), "unit of the column's values (e.g. N/m) when its name does not say")
-      ("write", po::value(&options.write), "write the best-AIC family (or --family) as a line file")
+      ("write", po::value(&options.write), "write the best-AIC family (or --family) as a line file; - writes it to "
+                                           "standard output (the table then goes to standard error)")
       ("force", po::bool_switch(&options.force), "overwrite --write if it exists");
   po::positional_options_description positional;
   positional.add("data", 1);
@@ -150,10 +154,13 @@ int run_fit(const Arguments& arguments) {
   std::optional<FitFamily> requested;
   if (!options.family.empty()) {
     requested = parse_fit_family(options.family);
-    if (!requested) throw_bad_value("", "--family", options.family, "lognormal, normal, gamma or weibull");
+    // The beta law of einf is fitted from raw data (fit-line, campaigns), not here yet.
+    if (!requested || *requested == FitFamily::beta) {
+      throw_bad_value("", "--family", options.family, "lognormal, normal, gamma or weibull");
+    }
   }
   const Target target = resolve_target(options);
-  if (!options.write.empty()) check_can_write(options.write, options.force ? Overwrite::allow : Overwrite::refuse);
+  if (!options.write.empty()) check_result_target(options.write, options.force ? Overwrite::allow : Overwrite::refuse);
 
   const CsvTable table = read_csv(options.data);
   const std::vector<double> data = table.numeric_column(options.column);  // row-numbered errors
@@ -194,21 +201,22 @@ int run_fit(const Arguments& arguments) {
   }
   std::stable_sort(fits.begin(), fits.end(), [](const FitResult& a, const FitResult& b) { return a.aic < b.aic; });
 
-  std::cout << "n = " << data.size() << " values of " << options.column << " (" << target.variable << " in "
+  std::ostream& report = report_stream(options.write);
+  report << "n = " << data.size() << " values of " << options.column << " (" << target.variable << " in "
             << target.unit->symbol << ") from " << table.path << "\n\n";
-  print_table(fits);
+  print_table(fits, report);
   if (!skipped.empty()) {
     std::string list;
     for (const std::string& name : skipped) list += (list.empty() ? "" : ", ") + name;
-    std::cout << "\nnote: skipped " << list << " (they need values > 0): " << table.row_location(*non_positive)
+    report << "\nnote: skipped " << list << " (they need values > 0): " << table.row_location(*non_positive)
               << " has " << options.column << " = " << table.rows[*non_positive][table.column_index(options.column)]
               << "\n";
   }
   if (!options.write.empty()) {
-    write_file_atomically(options.write, line_file_text(options, target, fits.front()),
-                          options.force ? Overwrite::allow : Overwrite::refuse);
-    std::cout << "\nwrote " << to_string(fits.front().family) << " law of " << target.variable << " to "
-              << options.write << "\n";
+    write_result(options.write, line_file_text(options, table.path, target, fits.front()),
+                 options.force ? Overwrite::allow : Overwrite::refuse);
+    report << "\nwrote " << to_string(fits.front().family) << " law of " << target.variable << " to "
+           << (is_standard_output(options.write) ? "standard output" : options.write) << "\n";
   }
   return 0;
 }

@@ -13,6 +13,7 @@
 #include "growthuq/rawdata/raw_line_file.hpp"
 #include "growthuq/rawdata/raw_line_fit.hpp"
 #include "options.hpp"
+#include "result_output.hpp"
 
 namespace growthuq::cli {
 
@@ -23,7 +24,8 @@ int run_fit_line(const Arguments& arguments) {
   po::options_description described("options");
   described.add_options()
       ("raw", po::value(&raw_path)->required(), "raw line file (raw.ini)")
-      ("out", po::value(&out), "write the fitted line file here (distributions/<line>.ini format)")
+      ("out", po::value(&out), "write the fitted line file here (distributions/<line>.ini format); - writes it to "
+                               "standard output (the report then goes to standard error)")
       ("rho-um", po::value(&rho_um), "probe radius (um) for relaxation curves whose tube sheet has no rho_um column")
       ("nu", po::value(&nu)->default_value(nu), "Poisson ratio of the wall (maps force to E_r(t))")
       ("force", po::bool_switch(&force), "overwrite --out");
@@ -46,12 +48,13 @@ int run_fit_line(const Arguments& arguments) {
   if (values.count("rho-um")) entries.probe_radius_um.text = rho_um;  // given, even if empty
   settings.instrument = parse_instrument(entries, ProbeRadius::optional);
   const Overwrite overwrite = force ? Overwrite::allow : Overwrite::refuse;
-  if (!out.empty()) check_can_write(out, overwrite);
+  if (!out.empty()) check_result_target(out, overwrite);
   const RawLineFit fit = fit_raw_line(read_raw_line_file(raw_path), settings);
-  std::cout << format_raw_fit_report(fit);
+  std::ostream& report = report_stream(out);
+  report << format_raw_fit_report(fit);
   if (!out.empty()) {
-    write_file_atomically(out, fitted_line_file_text(fit), overwrite);
-    std::cout << "line file written to " << out << "\n";
+    write_result(out, fitted_line_file_text(fit), overwrite);
+    report << wrote(out) << "\n";
   }
   return 0;
 }

@@ -103,7 +103,7 @@ int run_indent(const Arguments& arguments) {
                        "a nonlinear Kirchhoff-Love shell (membrane + bending), inflated from the plasmolysed state by\n"
                        "turgor p, then indented at the probe (displacement-controlled, frictionless contact with probe\n"
                        "and substrate). Diameters are mid-surface diameters. k is the slope of a least-squares line of\n"
-                       "F against delta over the force window, as the instrument's software fits it.\n"
+                       "F against delta over the force window, as the instrument's software fits it.\n\n"
                        "Prints name = value lines: k_N_per_m (the tube; k_measured_N_per_m in series with --k-sys),\n"
                        "d_um (turgid diameter far from tip and end; the sphere's for --geometry sphere), axial_stretch,\n"
                        "thickness_stretch, h0_nm, contact_radius_um (at the window's top), newton_iterations, seconds,\n"

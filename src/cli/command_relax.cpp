@@ -1,6 +1,7 @@
 // growthuq relax: generalized Maxwell fits of force-relaxation curves, one row per curve in a
-// CSV, a summary on stdout and, on request, lognormal distribution entries for tau and e_inf
-// in the line-file format (Eqs. (R1)-(R7), src/relaxation/README.md).
+// CSV, a summary on stdout and, on request, distribution entries for tau (lognormal) and e_inf
+// (beta, bounded like the fraction) in the line-file format (Eqs. (R1)-(R7),
+// src/relaxation/README.md).
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -11,12 +12,15 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
+#include "growthuq/distributions/fit.hpp"
+#include "growthuq/distributions/line_file.hpp"
 #include "growthuq/io/csv.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/relaxation/analysis.hpp"
 #include "growthuq/relaxation/curves.hpp"
 #include "options.hpp"
+#include "result_output.hpp"
 
 namespace growthuq::cli {
 namespace {
@@ -39,16 +43,17 @@ RelaxOptions parse(const Arguments& arguments, bool& run) {
       ("curves", po::value(&options.curves)->required(), "force curves: CSV curve,t_s,F_uN")
       ("meta", po::value(&options.meta), "per-curve metadata: CSV curve,delta_um,p_MPa,d_um,h_nm[,rho_um] "
                                          "(default: the same columns in the curves file)")
-      ("out", po::value(&options.out)->required(), "fits, one row per curve (CSV)")
+      ("out", po::value(&options.out)->required(), "fits, one row per curve (CSV); - writes them to standard output "
+                                                   "(the report then goes to standard error)")
       ("terms", po::value(&options.analysis.terms)->default_value(2), "exponentials in the Prony series: 1, 2 or 3")
       ("ramp-aware", po::bool_switch(&options.analysis.ramp_aware),
        "fit the simulated ramp and hold instead of a step at the force maximum")
       ("drop-ramp-multiple", po::value(&options.analysis.drop_ramp_multiple)->default_value(0.0),
        "step fit: leave out hold samples with t < this x ramp time")
-      ("rho-um", po::value(&rho_um), "probe radius (um) for curves without a rho_um column")
+      ("rho-um", po::value(&rho_um), "probe radius (um) of every curve; a rho_um column, if any, must agree")
       ("nu", po::value(&nu)->default_value(nu), "Poisson ratio of the wall")
       ("fit-distributions", po::value(&options.distributions_out),
-       "write lognormal [tau] and [einf] line-file sections fitted to the ok curves")
+       "write [tau] (lognormal) and [einf] (beta) line-file sections fitted to the ok curves (- for standard output)")
       ("force", "overwrite existing outputs");
   po::positional_options_description positional;
   positional.add("curves", 1);
@@ -113,6 +118,18 @@ std::string lognormal_section(std::string_view name, std::string_view unit, cons
   return out.str();
 }
 
+// einf is a fraction: its section is the beta ML fit (Eq. (D5), src/distributions/README.md), a law
+// that never draws above 1; a lognormal's upper tail reaches past 1, and line files refuse it.
+std::string beta_section(const std::vector<double>& einf, const std::string& source) {
+  try {
+    const FitResult fit = fit_distribution(FitFamily::beta, einf);
+    return format_line_variable(
+        LineVariable{"einf", &find_unit("frac", "growthuq relax", "unit"), fit.distribution, source, "", 0});
+  } catch (const InputError& error) {
+    throw InputError("--fit-distributions", "einf of the ok curves: " + error.problem());
+  }
+}
+
 std::string distributions_text(const std::vector<CurveFit>& fits, const std::string& curves_path) {
   std::vector<double> tau, einf;
   for (const CurveFit& fit : fits) {
@@ -125,27 +142,27 @@ std::string distributions_text(const std::vector<CurveFit>& fits, const std::str
                                                 " curve(s) with status ok: expected at least 2 to fit a lognormal");
   }
   const std::string source = "fitted from " + curves_path + ", " + std::to_string(tau.size()) + " curves";
-  return "# Written by growthuq relax: lognormal maximum-likelihood fits to the per-curve slow relaxation\n"
-         "# time and rescaled equilibrium modulus E_inf/E_r(0) of the curves with status ok.\n" +
-         lognormal_section("tau", "s", tau, source) + "\n" + lognormal_section("einf", "frac", einf, source);
+  return "# Written by growthuq relax: maximum-likelihood fits to the per-curve slow relaxation time\n"
+         "# (lognormal) and rescaled equilibrium modulus E_inf/E_r(0) (beta) of the curves with status ok.\n" +
+         lognormal_section("tau", "s", tau, source) + "\n" + beta_section(einf, source);
 }
 
-void print_summary(const std::vector<CurveFit>& fits, const RelaxOptions& options) {
-  std::cout << "growthuq relax: " << fits.size() << " curve(s) from " << options.curves << ", "
+void print_summary(const std::vector<CurveFit>& fits, const RelaxOptions& options, std::ostream& report) {
+  report << "growthuq relax: " << fits.size() << " curve(s) from " << options.curves << ", "
             << options.analysis.terms << "-term " << (options.analysis.ramp_aware ? "ramp-aware" : "step") << " fit\n";
   std::size_t ok = 0;
   for (const CurveFit& fit : fits) {
-    std::cout << "  " << fit.curve << ": ";
+    report << "  " << fit.curve << ": ";
     if (fit.ok) {
       ++ok;
-      std::cout << "tau_slow " << format_double(std::round(fit.tau.back() * 1e3) / 1e3) << " s, E_inf/E_r(0) "
+      report << "tau_slow " << format_double(std::round(fit.tau.back() * 1e3) / 1e3) << " s, E_inf/E_r(0) "
                 << format_double(std::round(fit.einf * 1e3) / 1e3) << ", eta "
                 << format_double(std::round(to_MPa_s(fit.viscosity) * 10) / 10) << " MPa s\n";
     } else {
-      std::cout << "fit_failed: " << fit.reason << "\n";
+      report << "fit_failed: " << fit.reason << "\n";
     }
   }
-  std::cout << ok << " ok, " << fits.size() - ok << " failed; fits in " << options.out << "\n";
+  report << ok << " ok, " << fits.size() - ok << " failed; fits in " << (is_standard_output(options.out) ? "standard output" : options.out) << "\n";
 }
 
 }  // namespace
@@ -154,8 +171,11 @@ int run_relax(const Arguments& arguments) {
   bool run = true;
   const RelaxOptions options = parse(arguments, run);
   if (!run) return 0;
-  check_can_write(options.out, options.overwrite);
-  if (!options.distributions_out.empty()) check_can_write(options.distributions_out, options.overwrite);
+  if (is_standard_output(options.out) && is_standard_output(options.distributions_out)) {
+    throw InputError("growthuq relax", "--out and --fit-distributions are both -: standard output takes one result");
+  }
+  check_result_target(options.out, options.overwrite);
+  if (!options.distributions_out.empty()) check_result_target(options.distributions_out, options.overwrite);
 
   const std::vector<RelaxationCurve> curves = read_relaxation_curves(options.curves, options.meta, given_probe_radius_m(options.instrument));
   std::vector<CurveFit> fits;
@@ -163,11 +183,10 @@ int run_relax(const Arguments& arguments) {
 
   const std::string distributions =
       options.distributions_out.empty() ? std::string() : distributions_text(fits, options.curves);
-  write_file_atomically(options.out, fits_csv(fits, options.analysis.terms), options.overwrite);
-  if (!options.distributions_out.empty()) {
-    write_file_atomically(options.distributions_out, distributions, options.overwrite);
-  }
-  print_summary(fits, options);
+  write_result(options.out, fits_csv(fits, options.analysis.terms), options.overwrite);
+  if (!options.distributions_out.empty()) write_result(options.distributions_out, distributions, options.overwrite);
+  const bool to_stdout = is_standard_output(options.out) || is_standard_output(options.distributions_out);
+  print_summary(fits, options, to_stdout ? std::cerr : std::cout);
   return 0;
 }
 

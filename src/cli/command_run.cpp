@@ -19,9 +19,10 @@
 #include "campaign/progress.hpp"
 #include "campaign/run_footprint.hpp"
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/printable.hpp"
 #include "core/interrupt.hpp"
-#include "growthuq/core/numbers.hpp"
 #include "growthuq/pool/pool.hpp"
+#include "campaign_flags.hpp"
 #include "options.hpp"
 #include "pool_command.hpp"
 
@@ -31,29 +32,16 @@ namespace {
 
 struct RunOptions {
   std::string campaign;
-  std::string samples;  // as typed, parsed strictly below
-  std::string seed;
-  std::string out;
-  std::string lines;
-  std::string formats;
+  CampaignFlags flags;
   std::string resume;  // output directory of an interrupted run
   bool force = false;
   bool quiet = false;
+  bool summary_only = false;
   bool no_checkpoint = false;
 };
 
 constexpr std::string_view location = "growthuq run";
-constexpr std::string_view usage = "CAMPAIGN.ini [options]  |  growthuq run --resume DIR [--quiet]";
-
-CampaignOverrides overrides_of(const RunOptions& options, const po::variables_map& values) {
-  CampaignOverrides overrides;
-  if (values.count("samples")) overrides.samples = parse_count(options.samples, location, "--samples", 1, 4294967295ULL);
-  if (values.count("seed")) overrides.seed = parse_count(options.seed, location, "--seed");
-  if (values.count("out")) overrides.output_dir = options.out;
-  if (values.count("lines")) overrides.lines = options.lines;
-  if (values.count("formats")) overrides.formats = options.formats;
-  return overrides;
-}
+constexpr std::string_view usage = "CAMPAIGN.ini [options] | growthuq run --resume DIR [--quiet] [--summary-only]";
 
 std::string command_line_of(const Arguments& arguments) {
   std::string text = "growthuq run";
@@ -72,9 +60,9 @@ void check_resume_options(const RunOptions& options, const po::variables_map& va
   if (!options.campaign.empty()) {
     throw InputError(where, "give a campaign file or --resume DIR, not both: the resumed run uses the campaign stored in its checkpoint");
   }
-  for (const char* option : {"samples", "seed", "out", "lines", "formats"}) {
-    if (values.count(option)) {
-      throw InputError(where, std::string("--") + option +
+  for (const std::string_view option : campaign_flag_names) {
+    if (values.count(std::string(option))) {
+      throw InputError(where, "--" + std::string(option) +
                                   " cannot be combined with --resume: the resumed run keeps the settings of the interrupted "
                                   "one, so that its results are the same");
     }
@@ -91,10 +79,11 @@ void check_resume_options(const RunOptions& options, const po::variables_map& va
 void warn_if_campaign_file_differs(const CheckpointManifest& manifest, const std::string& manifest_path) {
   const CampaignFileNow now = campaign_file_now(manifest);
   if (now == CampaignFileNow::unchanged) return;
-  std::cerr << "growthuq run: warning: " << locate(manifest, manifest.campaign_path)
-            << (now == CampaignFileNow::changed ? " changed since the run started" : " cannot be read now")
-            << "; resuming with the campaign text stored in " << manifest_path
-            << " (to run the file as it is now, start the run again with --force)\n";
+  std::cerr << printable("growthuq run: warning: " + locate(manifest, manifest.campaign_path) +
+                         (now == CampaignFileNow::changed ? " changed since the run started" : " cannot be read now") +
+                         "; resuming with the campaign text stored in " + manifest_path +
+                         " (to run the file as it is now, start the run again with --force)")
+            << "\n";
 }
 
 // The checkpoint's campaign, after rank 0 has checked that nothing it read has changed.
@@ -119,12 +108,13 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
   OutputSettings settings;
   settings.overwrite = options.force ? Overwrite::allow : Overwrite::refuse;
   settings.progress = pool.is_coordinator() ? choose_progress_mode(options.quiet) : ProgressMode::none;
+  settings.line_reports = !options.summary_only;
   std::optional<PreparedCampaign> prepared;
   if (values.count("resume")) {
     prepared.emplace(resumed(options.resume, pool, settings), pool, settings.progress, std::cerr);
   } else {
     Campaign campaign = read_campaign_on_pool(options.campaign, pool);
-    const CampaignOverrides overrides = overrides_of(options, values);
+    const CampaignOverrides overrides = options.flags.overrides(values, location);
     apply_overrides(campaign, overrides);
     prepared.emplace(std::move(campaign), pool, settings.progress, std::cerr);
     settings.command_line = command_line_of(arguments);
@@ -155,7 +145,7 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
   try {
     outcome = run_campaign_with_outputs(*prepared, pool, settings, std::cout, std::cerr);
   } catch (const RunInterrupted& interrupted) {
-    if (pool.is_coordinator()) std::cerr << "growthuq run: " << interrupted.what() << "\n";
+    if (pool.is_coordinator()) std::cerr << "growthuq run: " << printable(interrupted.what()) << "\n";
     return exit_status_of_signal(interrupted.reason());
   }
   if (std::getenv("GROWTHUQ_TIMINGS") != nullptr) {
@@ -175,14 +165,14 @@ int run_run(const Arguments& arguments) {
   RunOptions options;
   po::options_description described("options");
   described.add_options()
-      ("campaign", po::value(&options.campaign), "campaign file (INI; relative paths in it start at its folder)")
-      ("samples", po::value(&options.samples), "samples per line (overrides [campaign] samples)")
-      ("seed", po::value(&options.seed), "campaign seed, 0 to 2^64 - 1 (overrides [campaign] seed)")
-      ("out", po::value(&options.out), "output directory (overrides [campaign] output_dir)")
-      ("lines", po::value(&options.lines), "comma-separated subset of the campaign's lines (keep the reference line)")
-      ("formats", po::value(&options.formats), "csv, hdf5 or csv,hdf5 (summary.csv is always written)")
+      ("campaign", po::value(&options.campaign), "campaign file (INI; relative paths in it start at its folder)");
+  options.flags.declare(described);
+  described.add_options()
       ("force", po::bool_switch(&options.force), "reuse an existing output directory, replacing its results")
       ("quiet", po::bool_switch(&options.quiet), "no progress on stderr")
+      ("summary-only", po::bool_switch(&options.summary_only),
+       "print only the summary table and kappa on stdout, not each line's input correlation, analysis and "
+       "raw-data fits (for campaigns of many lines; results.h5 keeps them)")
       ("resume", po::value(&options.resume)->value_name("DIR"),
        "finish the interrupted run whose output directory is DIR (no campaign file: it is in DIR/checkpoint)")
       ("no-checkpoint", po::bool_switch(&options.no_checkpoint),

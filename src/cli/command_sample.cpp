@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -14,6 +13,7 @@
 #include "commands.hpp"
 #include "campaign/run_footprint.hpp"
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/printable.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
 #include "growthuq/correlation/matrix_file.hpp"
@@ -24,10 +24,9 @@
 #include "growthuq/stats/rank_correlation.hpp"
 #include "growthuq/stats/sample_summary.hpp"
 #include "options.hpp"
+#include "result_output.hpp"
 
 namespace growthuq::cli {
-
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -51,15 +50,23 @@ std::string padded(const std::string& text, std::size_t width) {
   return text.size() >= width ? text + " " : text + std::string(width - text.size(), ' ');
 }
 
-// The design as CSV, streamed a row at a time through a partial file (output_file.hpp), so the
-// text is never in memory whole.
+// The design as CSV, streamed a row at a time through a partial file (output_file.hpp), or to
+// standard output for "-", so the text is never in memory whole.
 void write_design_csv(const std::string& path, const LineDistributions& line, const LineDesign& design) {
-  PartialFile file(path);
+  std::optional<PartialFile> file;
+  if (!is_standard_output(path)) file.emplace(path);
+  const auto write = [&file](const std::string& text) {
+    if (file) {
+      file->write(text);
+    } else {
+      std::cout << text;
+    }
+  };
   std::string row;
   for (const LineVariable& variable : line.variables) {
     row += (row.empty() ? "" : ",") + csv_cell(column_name(variable.name, *variable.unit));
   }
-  file.write(row + "\n");
+  write(row + "\n");
   const std::size_t n = design.values.empty() ? 0 : design.values[0].size();
   for (std::size_t i = 0; i < n; ++i) {
     row.clear();
@@ -68,9 +75,9 @@ void write_design_csv(const std::string& path, const LineDistributions& line, co
       row += format_double(design.values[j][i]);
     }
     row += '\n';
-    file.write(row);
+    write(row);
   }
-  file.commit();
+  if (file) file->commit();
 }
 
 // Column j's summary. When its values strictly increase with the strata, stratum k holds the
@@ -89,17 +96,17 @@ std::string correlation_number(double value) {
   return text;
 }
 
-void print_summary(const LineDistributions& line, const LineDesign& design) {
+void print_summary(const LineDistributions& line, const LineDesign& design, std::ostream& report) {
   std::size_t law_width = 14;
   for (const LineVariable& variable : line.variables) law_width = std::max(law_width, describe(variable.distribution).size() + 2);
-  std::cout << padded("variable", 10) << padded("unit", 8) << padded("distribution", law_width) << padded("median", 11)
+  report << padded("variable", 10) << padded("unit", 8) << padded("distribution", law_width) << padded("median", 11)
             << padded("(law)", 11) << padded("IQR", 11) << "(law)\n";
   for (std::size_t j = 0; j < line.variables.size(); ++j) {
     const LineVariable& variable = line.variables[j];
     const SampleSummary sample = column_summary(design, j);
     const double law_q1 = quantile(variable.distribution, 0.25);
     const double law_q3 = quantile(variable.distribution, 0.75);
-    std::cout << padded(variable.name, 10) << padded(std::string(variable.unit->symbol), 8)
+    report << padded(variable.name, 10) << padded(std::string(variable.unit->symbol), 8)
               << padded(describe(variable.distribution), law_width) << padded(number(sample.median), 11)
               << padded(number(quantile(variable.distribution, 0.5)), 11) << padded(number(sample.iqr()), 11)
               << number(law_q3 - law_q1) << "\n";
@@ -110,7 +117,7 @@ void print_summary(const LineDistributions& line, const LineDesign& design) {
   // their largest achieved correlation, which shows the design's chance correlation.
   std::vector<std::span<const std::uint32_t>> ranks(design.ranks.begin(), design.ranks.end());
   const Eigen::MatrixXd achieved = spearman_matrix_of_ranks(ranks);
-  std::cout << "\n" << padded("rank correlation (Spearman)", 30) << padded("target", 10) << "achieved\n";
+  report << "\n" << padded("rank correlation (Spearman)", 30) << padded("target", 10) << "achieved\n";
   double largest_independent = 0;
   std::size_t independent_pairs = 0;
   for (std::size_t a = 0; a < m; ++a) {
@@ -123,12 +130,12 @@ void print_summary(const LineDistributions& line, const LineDesign& design) {
         ++independent_pairs;
         continue;
       }
-      std::cout << padded(design.names[a] + ", " + design.names[b], 30) << padded(correlation_number(target), 10)
+      report << padded(design.names[a] + ", " + design.names[b], 30) << padded(correlation_number(target), 10)
                 << correlation_number(achieved(ia, ib)) << "\n";
     }
   }
   if (independent_pairs > 0) {
-    std::cout << padded("other " + std::to_string(independent_pairs) + " pairs", 30) << padded(correlation_number(0.0), 10)
+    report << padded("other " + std::to_string(independent_pairs) + " pairs", 30) << padded(correlation_number(0.0), 10)
               << "largest |achieved| " << number(largest_independent) << "\n";
   }
 }
@@ -160,24 +167,25 @@ int run_sample(const Arguments& arguments) {
   sampling.seed = parse_count(options.seed, "growthuq sample", "--seed");
   sampling.position = options.centred ? StratumPosition::centred : StratumPosition::random;
   const Overwrite overwrite = options.force ? Overwrite::allow : Overwrite::refuse;
-  check_can_write(options.out, overwrite);
+  check_result_target(options.out, overwrite);
 
   const LineDistributions line = read_line_file(options.line_file);
   // A design this machine cannot hold is refused now rather than killed part way (run_footprint.hpp).
   require_room(estimate_design_footprint(sampling.samples, line.variables.size()),
-               machine_room(1, fs::path(options.out).parent_path().string()), "growthuq sample", "--samples");
+               machine_room(1, options.out), "growthuq sample", "--samples");
   std::optional<RankCorrelationFile> correlation;
   if (!options.rank_correlation_file.empty()) correlation = read_rank_correlation_csv(options.rank_correlation_file);
 
   const LineDesign design = sample_line(line, sampling, correlation ? &*correlation : nullptr);
-  for (const std::string& warning : design.warnings) std::cerr << "growthuq sample: " << warning << "\n";
+  for (const std::string& warning : design.warnings) std::cerr << "growthuq sample: " << printable(warning) << "\n";
   write_design_csv(options.out, line, design);
 
-  std::cout << "line '" << line.name << "' (" << line.path << "): " << sampling.samples << " samples, seed "
+  std::ostream& report = report_stream(options.out);
+  report << "line '" << line.name << "' (" << line.path << "): " << sampling.samples << " samples, seed "
             << sampling.seed << ", " << (options.centred ? "centred" : "random") << " points in the strata"
             << (design.correlation.imposed ? ", rank correlation imposed (Iman-Conover)" : "") << "\n"
-            << "wrote " << options.out << "\n\n";
-  print_summary(line, design);
+            << wrote(options.out) << "\n\n";
+  print_summary(line, design, report);
   return 0;
 }
 

@@ -17,6 +17,7 @@
 #include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/synthetic/synthetic_line.hpp"
 #include "options.hpp"
+#include "result_output.hpp"
 
 namespace growthuq::cli {
 namespace {
@@ -24,6 +25,11 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::string_view location = "growthuq synth";
+constexpr std::string_view raw_ini_name = "raw.ini";
+
+// The most samples of a line's relaxation curves in their hold (about 20 bytes each in
+// relaxation_curves.csv: 40 MB); the defaults give 60000.
+constexpr double max_curve_samples_per_line = 2e6;
 
 struct SynthOptions {
   std::vector<std::string> lines;
@@ -71,6 +77,16 @@ SynthSettings settings_of(const SynthOptions& options) {
     throw_bad_value(location, "--force-noise-pct", format_double(options.noise_pct), "a percentage in [0, 100)");
   }
   settings.force_noise = from_pct(options.noise_pct);
+  // The curves are held in memory and read back by relax and fit-line (256 MiB per file): their
+  // hold phases are bounded, in samples per line, instead of growing memory without limit.
+  const double hold_samples = options.hold_s * options.sample_hz * static_cast<double>(settings.curves.high);
+  if (!(hold_samples <= max_curve_samples_per_line)) {
+    throw_bad_value(location, "--sample-hz", format_double(options.sample_hz),
+                    "at most " + format_double(std::floor(max_curve_samples_per_line / (options.hold_s * static_cast<double>(settings.curves.high)))) +
+                        " Hz with --hold-s " + format_double(options.hold_s) + " and up to " + std::to_string(settings.curves.high) +
+                        " curves: a line's curves hold at most " + std::to_string(static_cast<long>(max_curve_samples_per_line)) +
+                        " samples (hold x rate x curves)");
+  }
   return settings;
 }
 
@@ -146,6 +162,10 @@ int run_synth(const Arguments& arguments) {
     }
   }
 
+  if (is_standard_output(options.out)) {
+    throw InputError(options.out, "standard output cannot take a data set (a folder per line): expected a folder "
+                                  "name (./- for one named -)");
+  }
   const auto start = std::chrono::steady_clock::now();
   for (const LineDistributions& truth : truths) {
     const auto line_start = std::chrono::steady_clock::now();
@@ -155,11 +175,18 @@ int run_synth(const Arguments& arguments) {
     std::error_code error;
     fs::create_directories(folder, error);
     if (error) throw InputError(folder.string(), "cannot create the folder: " + error.message());
+    // raw.ini names the other files: written together, raw.ini moved in last, so a full disk
+    // never leaves a raw.ini naming a file that is not there.
+    std::vector<FileContent> together;
     std::size_t bytes = 0;
     for (const SynthFile& file : files) {
-      write_file_atomically((folder / file.name).string(), file.text, overwrite);
+      if (file.name != raw_ini_name) together.push_back({(folder / file.name).string(), file.text});
       bytes += file.text.size();
     }
+    for (const SynthFile& file : files) {
+      if (file.name == raw_ini_name) together.push_back({(folder / file.name).string(), file.text});
+    }
+    write_files_together(together, overwrite);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - line_start).count();
     std::cout << "growthuq synth: " << truth.name << ": " << files.size() << " files, " << (bytes + 512) / 1024
               << " KiB in " << folder.string() << " (" << format_double(std::round(seconds * 100.0) / 100.0) << " s)\n";

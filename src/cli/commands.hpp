@@ -24,6 +24,7 @@ int run_eval(const Arguments& arguments);
 int run_correlate(const Arguments& arguments);
 int run_relax(const Arguments& arguments);
 int run_run(const Arguments& arguments);
+int run_check(const Arguments& arguments);
 int run_tradeoff(const Arguments& arguments);
 int run_synth(const Arguments& arguments);
 int run_fit_line(const Arguments& arguments);

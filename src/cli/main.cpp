@@ -10,7 +10,10 @@
 #include <string>
 
 #include "commands.hpp"
+#include "core/interrupt.hpp"
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/printable.hpp"
+#include "options.hpp"
 
 namespace {
 
@@ -23,6 +26,7 @@ constexpr std::array commands{
     Command{"correlate", "rank correlation of (k, h, d, d0) from the forward mechanics", growthuq::cli::run_correlate},
     Command{"relax", "fit generalized Maxwell series to force-relaxation curves", growthuq::cli::run_relax},
     Command{"run", "run a campaign: plant lines through the models, summaries and result files", growthuq::cli::run_run},
+    Command{"check", "validate a campaign as run does and print its plan, without running it", growthuq::cli::run_check},
     Command{"tradeoff", "measured speed/accuracy trade of a campaign over sample counts", growthuq::cli::run_tradeoff},
     Command{"synth", "draw a SYNTHETIC raw data set (tables, curves) from true line distributions", growthuq::cli::run_synth},
     Command{"fit-line", "fit a plant line's distributions from its raw data (raw.ini) to a line file", growthuq::cli::run_fit_line},
@@ -46,33 +50,47 @@ int finish_stdout(const std::string& command, int status) {
 }
 
 void print_usage(std::ostream& out) {
-  out << "usage: growthuq <command> [options]   (growthuq <command> --help for its options)\n\n"
+  out << "usage: growthuq <command> [options]   (growthuq help <command> for its options)\n\n"
          "Monte Carlo uncertainty quantification of pollen tube mechanics and growth.\n\ncommands:\n";
   for (const Command& command : commands) {
-    out << "  " << command.name << std::string(12 - command.name.size(), ' ') << command.summary << "\n";
+    const std::string start = "  " + std::string(command.name) + std::string(12 - command.name.size(), ' ');
+    out << growthuq::cli::wrapped_help(command.summary, start, std::string(start.size(), ' ')) << "\n";
   }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A command killed by a signal leaves none of its partial files (core/interrupt.hpp).
+  growthuq::remove_partial_files_on_fatal_signals();
   if (argc < 2) {
     print_usage(std::cerr);
     return 2;
   }
-  const std::string name = argv[1];
-  if (name == "--help" || name == "-h" || name == "help") {
+  std::string name = argv[1];
+  growthuq::cli::Arguments arguments(argv + 2, argv + argc);
+  if (name == "--help" || name == "-h" || (name == "help" && arguments.empty())) {
     print_usage(std::cout);
     return finish_stdout("", 0);
   }
   if (name == "--version") {
-    std::cout << "growthuq " << GROWTHUQ_VERSION << "\n";
+    growthuq::cli::print_version(std::cout);
     return finish_stdout("", 0);
+  }
+  if (name == "help") {
+    // `growthuq help CMD` is `growthuq CMD --help`.
+    if (arguments.size() > 1) {
+      std::cerr << "growthuq help: error: expected one command, got " << arguments.size()
+                << ": growthuq help <command>\n";
+      return 2;
+    }
+    name = arguments.front();
+    arguments = {"--help"};
   }
   for (const Command& command : commands) {
     if (command.name != name) continue;
     try {
-      return finish_stdout(name, command.run(growthuq::cli::Arguments(argv + 2, argv + argc)));
+      return finish_stdout(name, command.run(arguments));
     } catch (const growthuq::InputError& error) {
       // Errors located at the command line itself carry "growthuq <name>" as their location;
       // print it once.
@@ -85,11 +103,11 @@ int main(int argc, char** argv) {
                    "command needed (fewer samples need less)\n";
       return 3;
     } catch (const std::exception& error) {
-      std::cerr << "growthuq " << name << ": internal error: " << error.what() << "\n";
+      std::cerr << "growthuq " << name << ": internal error: " << growthuq::printable(error.what()) << "\n";
       return 3;
     }
   }
-  std::cerr << "growthuq: unknown command '" << name << "'\n\n";
+  std::cerr << "growthuq: unknown command '" << growthuq::printable(name) << "'\n\n";
   print_usage(std::cerr);
   return 2;
 }

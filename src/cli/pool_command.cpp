@@ -5,11 +5,19 @@
 
 #include "growthuq/campaign/campaign_run.hpp"
 #include "growthuq/core/error.hpp"
+#include "growthuq/pool/launch.hpp"
 
 namespace growthuq::cli {
 
 int run_on_pool(const std::function<int(Pool&)>& command) {
-  const std::unique_ptr<Pool> pool = make_pool();
+  std::unique_ptr<Pool> pool;
+  try {
+    pool = make_pool();
+  } catch (const UnjoinableLaunch& error) {
+    // Every process of the launch finds the same: the first reports it, for one message.
+    if (error.launcher_rank() != 0) return 2;
+    throw;
+  }
   if (pool->is_coordinator()) return command(*pool);
   try {
     return command(*pool);

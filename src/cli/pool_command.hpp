@@ -14,7 +14,8 @@ namespace growthuq::cli {
 // Makes the pool and runs `command` with it. Every process meets the same errors at the same
 // point (on_coordinator shares the coordinator's); the coordinator's reach main(), which
 // reports them; the other processes only return main's exit code for them (2 for bad input,
-// 3 for any other error).
+// 3 for any other error). A process started in parallel that cannot join the others stops
+// before anything is written (pool/launch.hpp), reported by the launcher's first process only.
 int run_on_pool(const std::function<int(Pool&)>& command);
 
 // The campaign file at `path`, read by the coordinator and broadcast, so that every process

@@ -1,11 +1,15 @@
 #include "growthuq/core/error.hpp"
 
+#include "growthuq/core/printable.hpp"
+
 namespace growthuq {
 
+// Through printable(): whatever of the user's input a message quotes, it is one line that
+// cannot act on a terminal.
 InputError::InputError(std::string location, std::string problem)
-    : std::runtime_error(location.empty() ? problem : location + ": " + problem),
-      location_(std::move(location)),
-      problem_(std::move(problem)) {}
+    : std::runtime_error(location.empty() ? printable(problem) : printable(location) + ": " + printable(problem)),
+      location_(printable(location)),
+      problem_(printable(problem)) {}
 
 void throw_bad_value(std::string_view location, std::string_view key, std::string_view value,
                      std::string_view expected) {

@@ -23,6 +23,8 @@ constexpr std::array units{
     Unit{"m/s", "m_per_s", Dimension::velocity, 1.0},
     Unit{"um/s", "um_per_s", Dimension::velocity, unit_factor::um_per_s},
     Unit{"nm/s", "nm_per_s", Dimension::velocity, unit_factor::nm_per_s},
+    Unit{"um/min", "um_per_min", Dimension::velocity, unit_factor::um_per_min},
+    Unit{"um/h", "um_per_h", Dimension::velocity, unit_factor::um_per_h},
     Unit{"Pa s", "Pa_s", Dimension::viscosity, 1.0},
     Unit{"MPa s", "MPa_s", Dimension::viscosity, unit_factor::MPa_s},
 };
@@ -46,6 +48,18 @@ constexpr std::array quantities{
     Quantity{"wall_stiffness", Dimension::stiffness, "N/m", "wall stiffness E h"},
 };
 
+// `symbol` with the micro sign and the Greek mu (either may come from a keyboard, Excel or a
+// lab's software) spelled "u", as the unit table does.
+std::string with_ascii_micro(std::string_view symbol) {
+  std::string ascii(symbol);
+  for (const std::string_view micro : {std::string_view("\xC2\xB5"), std::string_view("\xCE\xBC")}) {
+    for (std::size_t at = ascii.find(micro); at != std::string::npos; at = ascii.find(micro, at + 1)) {
+      ascii.replace(at, micro.size(), "u");
+    }
+  }
+  return ascii;
+}
+
 }  // namespace
 
 std::string_view to_string(Dimension dimension) {
@@ -65,8 +79,9 @@ std::string_view to_string(Dimension dimension) {
 std::span<const Unit> known_units() { return units; }
 
 const Unit& find_unit(std::string_view symbol, std::string_view location, std::string_view key) {
+  const std::string ascii = with_ascii_micro(symbol);
   for (const Unit& unit : units) {
-    if (unit.symbol == symbol) return unit;
+    if (unit.symbol == ascii) return unit;
   }
   std::string accepted;
   for (const Unit& unit : units) {

@@ -68,30 +68,40 @@ std::string_view family_name(const Distribution& distribution) {
                                [](const Uniform&) { return std::string_view("uniform"); },
                                [](const Gamma&) { return std::string_view("gamma"); },
                                [](const Weibull&) { return std::string_view("weibull"); },
+                               [](const Beta&) { return std::string_view("beta"); },
                                [](const Empirical&) { return std::string_view("empirical"); }},
                     distribution);
 }
 
-std::string describe(const Distribution& distribution) {
-  const std::string body = std::visit(
+std::vector<std::pair<std::string, double>> parameter_values(const Distribution& distribution) {
+  using Parameters = std::vector<std::pair<std::string, double>>;
+  return std::visit(
       Overloaded{
-          [](const Lognormal& d) {
-            return "mu=" + number(d.mu()) + ", sigma=" + number(d.sigma()) + "; median=" +
-                   number(d.median()) + ", iqr=" + number(d.iqr());
-          },
-          [](const Normal& d) { return "mean=" + number(d.mean()) + ", sd=" + number(d.sd()); },
+          [](const Lognormal& d) { return Parameters{{"mu", d.mu()}, {"sigma", d.sigma()}}; },
+          [](const Normal& d) { return Parameters{{"mean", d.mean()}, {"sd", d.sd()}}; },
           [](const TruncatedNormal& d) {
-            return "mean=" + number(d.mean()) + ", sd=" + number(d.sd()) + ", lower=" + number(d.lower()) +
-                   ", upper=" + number(d.upper());
+            return Parameters{{"mean", d.mean()}, {"sd", d.sd()}, {"lower", d.lower()}, {"upper", d.upper()}};
           },
-          [](const Uniform& d) { return "lower=" + number(d.lower()) + ", upper=" + number(d.upper()); },
-          [](const Gamma& d) { return "shape=" + number(d.shape()) + ", scale=" + number(d.scale()); },
-          [](const Weibull& d) { return "shape=" + number(d.shape()) + ", scale=" + number(d.scale()); },
+          [](const Uniform& d) { return Parameters{{"lower", d.lower()}, {"upper", d.upper()}}; },
+          [](const Gamma& d) { return Parameters{{"shape", d.shape()}, {"scale", d.scale()}}; },
+          [](const Weibull& d) { return Parameters{{"shape", d.shape()}, {"scale", d.scale()}}; },
+          [](const Beta& d) { return Parameters{{"alpha", d.alpha()}, {"beta", d.beta()}, {"upper", d.upper()}}; },
           [](const Empirical& d) {
-            return "n=" + std::to_string(d.sorted_data().size()) + ", min=" + number(d.lower()) +
-                   ", max=" + number(d.upper());
+            return Parameters{{"n", static_cast<double>(d.sorted_data().size())}, {"min", d.lower()}, {"max", d.upper()}};
           }},
       distribution);
+}
+
+std::string describe(const Distribution& distribution) {
+  std::string body;
+  for (const auto& [name, value] : parameter_values(distribution)) {
+    // empirical's n is a count, printed in full
+    const std::string text = name == "n" ? std::to_string(static_cast<std::size_t>(value)) : number(value);
+    body += (body.empty() ? "" : ", ") + name + "=" + text;
+  }
+  if (const auto* lognormal = std::get_if<Lognormal>(&distribution)) {
+    body += "; median=" + number(lognormal->median()) + ", iqr=" + number(lognormal->iqr());
+  }
   return std::string(family_name(distribution)) + "(" + body + ")";
 }
 

@@ -48,7 +48,7 @@ struct Moments {
   double sum_log = 0;
 };
 
-Moments validate(FitFamily family, std::span<const double> data) {
+Moments validate(FitFamily family, std::span<const double> data, double fraction_upper) {
   const std::string location = location_of(family);
   if (data.size() < 2) {
     throw InputError(location, "needs at least two values, got " + std::to_string(data.size()));
@@ -59,7 +59,13 @@ Moments validate(FitFamily family, std::span<const double> data) {
     const double x = data[i];
     if (!std::isfinite(x) || (positive && !(x > 0.0))) {
       throw_bad_value(location, "value " + std::to_string(i + 1), format_double(x),
-                      positive ? "a positive finite number (this family lives on x > 0)" : "a finite number");
+                      family == FitFamily::beta ? "a number in (0, " + format_double(fraction_upper) + ")"
+                      : positive               ? "a positive finite number (this family lives on x > 0)"
+                                               : "a finite number");
+    }
+    if (family == FitFamily::beta && !(x < fraction_upper)) {
+      throw_bad_value(location, "value " + std::to_string(i + 1), format_double(x),
+                      "a number in (0, " + format_double(fraction_upper) + ") (the beta law lives strictly inside)");
     }
     m.mean += x;
     if (positive) m.sum_log += std::log(x);
@@ -84,6 +90,53 @@ std::pair<double, double> normal_ml(std::span<const double> data, double (*g)(do
   return {mean, std::sqrt(squares / static_cast<double>(data.size()))};
 }
 
+// Beta ML (Eq. (D5)) on y in (0, 1): Newton's method on the score of the concave
+// log-likelihood per value, l(a, b) = (a - 1) S1 + (b - 1) S2 - ln B(a, b), from the
+// method-of-moments start, each step halved until a and b stay positive and l does not fall.
+std::pair<double, double> beta_ml(std::span<const double> y, FitFamily family) {
+  const double n = static_cast<double>(y.size());
+  double mean = 0.0, s1 = 0.0, s2 = 0.0;
+  for (const double v : y) {
+    mean += v;
+    s1 += std::log(v);
+    s2 += std::log1p(-v);
+  }
+  mean /= n;
+  s1 /= n;
+  s2 /= n;
+  double variance = 0.0;
+  for (const double v : y) variance += (v - mean) * (v - mean);
+  variance /= n;
+  // Method of moments: alpha + beta = mean (1 - mean) / variance - 1 (> 0 for data inside (0, 1)).
+  const double total = variance > 0.0 ? mean * (1.0 - mean) / variance - 1.0 : 2.0;
+  double a = total > 0.0 ? mean * total : 1.0;
+  double b = total > 0.0 ? (1.0 - mean) * total : 1.0;
+  const auto log_likelihood = [&](double alpha, double beta) {
+    return (alpha - 1.0) * s1 + (beta - 1.0) * s2 - gsl_sf_lnbeta(alpha, beta);
+  };
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const double psi_sum = gsl_sf_psi(a + b);
+    const double ga = s1 - gsl_sf_psi(a) + psi_sum;
+    const double gb = s2 - gsl_sf_psi(b) + psi_sum;
+    // Newton: J d = g with J = -Hessian, positive definite.
+    const double t = gsl_sf_psi_1(a + b);
+    const double jaa = gsl_sf_psi_1(a) - t, jbb = gsl_sf_psi_1(b) - t, jab = -t;
+    const double determinant = jaa * jbb - jab * jab;
+    double da = (jbb * ga - jab * gb) / determinant;
+    double db = (jaa * gb - jab * ga) / determinant;
+    const double current = log_likelihood(a, b);
+    for (int halving = 0; halving < 60; ++halving) {
+      if (a + da > 0.0 && b + db > 0.0 && log_likelihood(a + da, b + db) >= current - 1e-15 * std::fabs(current)) break;
+      da /= 2.0;
+      db /= 2.0;
+    }
+    a += da;
+    b += db;
+    if (std::fabs(da) <= 1e-13 * a && std::fabs(db) <= 1e-13 * b) return {a, b};
+  }
+  throw InputError(location_of(family), "the likelihood equations did not converge in 200 Newton steps");
+}
+
 double identity(double x) { return x; }
 double natural_log(double x) { return std::log(x); }
 
@@ -95,12 +148,13 @@ std::string_view to_string(FitFamily family) {
     case FitFamily::normal: return "normal";
     case FitFamily::gamma: return "gamma";
     case FitFamily::weibull: return "weibull";
+    case FitFamily::beta: return "beta";
   }
   return "unknown";
 }
 
 std::optional<FitFamily> parse_fit_family(std::string_view name) {
-  for (const FitFamily family : all_fit_families) {
+  for (const FitFamily family : fraction_fit_families) {  // every family
     if (to_string(family) == name) return family;
   }
   return std::nullopt;
@@ -108,9 +162,9 @@ std::optional<FitFamily> parse_fit_family(std::string_view name) {
 
 bool needs_positive_data(FitFamily family) { return family != FitFamily::normal; }
 
-FitResult fit_distribution(FitFamily family, std::span<const double> data) {
+FitResult fit_distribution(FitFamily family, std::span<const double> data, double fraction_upper) {
   detail::gsl_errors_return();
-  const Moments m = validate(family, data);
+  const Moments m = validate(family, data, fraction_upper);
   const double n = static_cast<double>(data.size());
   const double half_log_two_pi = 0.5 * std::log(2.0 * std::numbers::pi);
   std::optional<Distribution> law;
@@ -170,6 +224,22 @@ FitResult fit_distribution(FitFamily family, std::span<const double> data) {
       law = Weibull(k, lambda);
       // sum (x / lambda)^k = n at the estimate.
       log_likelihood = n * std::log(k) - n * k * std::log(lambda) + (k - 1.0) * m.sum_log - n;
+      break;
+    }
+    case FitFamily::beta: {
+      std::vector<double> y(data.begin(), data.end());
+      double sum_log_complement = 0.0;
+      for (double& v : y) {
+        v /= fraction_upper;
+        sum_log_complement += std::log1p(-v);
+      }
+      const auto [a, b] = beta_ml(y, family);
+      law = Beta(a, b, fraction_upper);
+      // sum ln f(x) = (a - 1) sum ln y + (b - 1) sum ln(1 - y) - n ln B(a, b) - n ln upper, with
+      // sum ln y = sum ln x - n ln upper.
+      const double sum_log_y = m.sum_log - n * std::log(fraction_upper);
+      log_likelihood = (a - 1.0) * sum_log_y + (b - 1.0) * sum_log_complement - n * gsl_sf_lnbeta(a, b) -
+                       n * std::log(fraction_upper);
       break;
     }
   }

@@ -52,6 +52,7 @@ const std::vector<Law>& laws() {
       {"uniform", {{{"lower", Check::finite}, {"upper", Check::finite}}}, "lower, upper"},
       {"gamma", {{{"shape", Check::positive}, {"scale", Check::positive}}}, "shape, scale"},
       {"weibull", {{{"shape", Check::positive}, {"scale", Check::positive}}}, "shape, scale"},
+      {"beta", {{{"alpha", Check::positive}, {"beta", Check::positive}}}, "alpha, beta"},
       {"empirical", {{{"values", Check::finite}}}, "values"},
   };
   return table;
@@ -100,8 +101,9 @@ std::vector<double> parse_values(const IniDocument& document, const IniEntry& en
   return values;
 }
 
+// `fraction_upper`: where a fraction is 1 in the section's unit (the beta law's upper end).
 Distribution make_distribution(const IniDocument& document, const IniSection& section, const Law& law,
-                               const IniEntry& law_entry) {
+                               const IniEntry& law_entry, double fraction_upper) {
   // The parameter set whose first key is present (lognormal has two).
   const std::vector<Parameter>* chosen = nullptr;
   for (const auto& set : law.alternatives) {
@@ -150,6 +152,7 @@ Distribution make_distribution(const IniDocument& document, const IniSection& se
     if (law.name == "truncated_normal") return TruncatedNormal(values[0], values[1], values[2], values[3]);
     if (law.name == "uniform") return Uniform(values[0], values[1]);
     if (law.name == "gamma") return Gamma(values[0], values[1]);
+    if (law.name == "beta") return Beta(values[0], values[1], fraction_upper);
     return Weibull(values[0], values[1]);
   } catch (const InputError& error) {
     throw InputError(document.location(section.line), "[" + section.name + "] " + error.what());
@@ -166,7 +169,7 @@ LineVariable read_variable(const IniDocument& document, const IniSection& sectio
   const Quantity& quantity = *find_quantity(section.name);
 
   const IniEntry& law_entry = required_entry(document, section, "law", "law = " + joined(std::vector<std::string_view>{
-      "lognormal", "normal", "truncated_normal", "uniform", "gamma", "weibull", "empirical"}));
+      "lognormal", "normal", "truncated_normal", "uniform", "gamma", "weibull", "beta", "empirical"}));
   const auto law = std::find_if(laws().begin(), laws().end(), [&](const Law& l) { return l.name == law_entry.value; });
   if (law == laws().end()) {
     std::vector<std::string_view> names;
@@ -185,11 +188,35 @@ LineVariable read_variable(const IniDocument& document, const IniSection& sectio
     throw InputError(section_location, "[" + section.name +
                                            "] source = illustrative needs a one-line 'note' saying why the value was chosen");
   }
-  Distribution distribution = make_distribution(document, section, *law, law_entry);
+  const bool fraction = quantity.dimension == Dimension::fraction;
+  if (law->name == "beta" && !fraction) {
+    throw_bad_value(document.location(law_entry.line), "law", law_entry.value,
+                    "a law of " + section.name + " (" + std::string(quantity.description) +
+                        "): beta is a law of fractions (einf)");
+  }
+  Distribution distribution = make_distribution(document, section, *law, law_entry, 1.0 / unit.to_si);
   if (const std::optional<std::string> problem = sampled_range_problem(distribution, unit.to_si)) {
     throw InputError(section_location, "[" + section.name + "] law " + describe(distribution) + " in " +
                                            std::string(unit.symbol) + ": " + *problem + ": expected " +
                                            sampled_range_expectation + ", in the file's unit and in SI units");
+  }
+  // A fraction outside [0, 1] is no tube's: the law must keep every drawn value inside.
+  if (fraction) {
+    if (const std::optional<std::string> problem = fraction_range_problem(distribution, 1.0 / unit.to_si)) {
+      throw InputError(section_location, "[" + section.name + "] law " + describe(distribution) + " in " +
+                                             std::string(unit.symbol) + ": " + *problem +
+                                             ": expected a law of values in [0, 1] as a fraction ([0, 100] in %), "
+                                             "e.g. law = beta or a truncated_normal with upper = 1 (100 in %)");
+    }
+  }
+  // Every measured variable is a positive quantity. A law whose median is not positive draws
+  // mostly impossible values (flagged, left out of the statistics): the few left would pass for
+  // the line's.
+  if (const double median = quantile(distribution, 0.5); !(median > 0.0)) {
+    throw InputError(section_location, "[" + section.name + "] law " + describe(distribution) + " in " +
+                                           std::string(unit.symbol) + ": its median " + format_double(median) +
+                                           " is not positive: expected a law of positive values for " + section.name +
+                                           ", the " + std::string(quantity.description));
   }
   return LineVariable{section.name, &unit, std::move(distribution), source, note ? note->value : std::string(),
                       section.line};
@@ -253,6 +280,10 @@ std::string format_line_variable(const LineVariable& variable) {
         } else if constexpr (std::is_same_v<T, Uniform>) {
           entry("lower", d.lower());
           entry("upper", d.upper());
+        } else if constexpr (std::is_same_v<T, Beta>) {
+          // upper follows from the unit written below.
+          entry("alpha", d.alpha());
+          entry("beta", d.beta());
         } else if constexpr (std::is_same_v<T, Gamma> || std::is_same_v<T, Weibull>) {
           entry("shape", d.shape());
           entry("scale", d.scale());

@@ -27,4 +27,16 @@ std::optional<std::string> sampled_range_problem(const Distribution& law, double
   return std::nullopt;
 }
 
+std::optional<std::string> fraction_range_problem(const Distribution& law, double upper) {
+  // Both ends of the drawn range bound every value a design draws (the quantile is monotone).
+  const double highest = quantile(law, highest_drawn_probability);
+  if (!(highest <= upper)) {
+    return "its quantile at probability 1 - 2^-53 (1 - 1.1e-16) is " + format_double(highest) + ", above " +
+           format_double(upper) + " (a fraction of 1)";
+  }
+  const double lowest = quantile(law, lowest_drawn_probability);
+  if (!(lowest >= 0.0)) return "its quantile at probability 2^-86 (1.3e-26) is " + format_double(lowest) + ", below 0";
+  return std::nullopt;
+}
+
 }  // namespace growthuq

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <vector>
 
+#include "core/interrupt.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 
@@ -159,6 +160,7 @@ void write_shell_field(const ShellFeField& field, const std::string& xdmf_path, 
   // link or into a special file, never renamed over one.
   const std::string partial = h5_path + ".partial";
   prepare_partial_file(partial);
+  const RemovedOnSignal removed_on_signal(partial);
   write_data(field, partial);
   move_into_place(partial, h5_path);
   // The XDMF names the data file relative to itself, so the pair can be moved together.

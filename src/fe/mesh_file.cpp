@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <string_view>
@@ -11,6 +10,7 @@
 
 #include "fe/mesh.hpp"
 #include "growthuq/core/error.hpp"
+#include "io/read_text_file.hpp"
 
 namespace growthuq::fe {
 namespace {
@@ -244,8 +244,7 @@ void validate_closed_surface(const TriangleMesh& mesh, const std::string& where)
 }
 
 TriangleMesh read_mesh_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "cannot open the mesh file");
+  std::istringstream in(detail::read_text_file(path));
   std::string lower = path;
   std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   ParsedMesh parsed;

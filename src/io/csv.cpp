@@ -7,8 +7,9 @@
 namespace growthuq {
 namespace {
 
-// Splits one CSV line into trimmed cells, honouring double quotes ("" is a literal quote).
-std::vector<std::string> split_cells(std::string_view line, const std::string& location) {
+// Splits one CSV line into trimmed cells at `separator`, honouring double quotes ("" is a
+// literal quote).
+std::vector<std::string> split_cells(std::string_view line, char separator, const std::string& location) {
   std::vector<std::string> cells;
   std::string cell;
   bool quoted = false;
@@ -25,7 +26,7 @@ std::vector<std::string> split_cells(std::string_view line, const std::string& l
       }
     } else if (c == '"') {
       quoted = true;
-    } else if (c == ',') {
+    } else if (c == separator) {
       cells.emplace_back(trim(cell));
       cell.clear();
     } else {
@@ -35,6 +36,50 @@ std::vector<std::string> split_cells(std::string_view line, const std::string& l
   if (quoted) throw InputError(location, "a quoted cell is not closed on this line");
   cells.emplace_back(trim(cell));
   return cells;
+}
+
+// How many times `c` stands outside double quotes in `line`.
+std::size_t count_unquoted(std::string_view line, char c) {
+  std::size_t count = 0;
+  bool quoted = false;
+  for (const char x : line) {
+    if (x == '"') quoted = !quoted;  // "" inside a quoted cell toggles twice: no change
+    if (!quoted && x == c) ++count;
+  }
+  return count;
+}
+
+// The separator the header line uses: ';' when it has semicolons and no commas outside quotes
+// (Excel's CSV where the decimal separator is a comma), ',' otherwise. Both is ambiguous.
+char header_separator(std::string_view header, const std::string& location) {
+  const std::size_t commas = count_unquoted(header, ',');
+  const std::size_t semicolons = count_unquoted(header, ';');
+  if (commas > 0 && semicolons > 0) {
+    throw InputError(location, "the header has both ',' and ';' between names: expected one separator, ',' "
+                               "(decimal points) or ';' (decimal commas, as Excel writes CSV where the decimal "
+                               "separator is a comma); quote a name that holds the other one");
+  }
+  return semicolons > 0 ? ';' : ',';
+}
+
+// A cell of a semicolon-separated file as the rest of the engine reads numbers: "-1,5E-06"
+// becomes "-1.5E-06"; any other cell is kept as it is. A number written with a decimal point
+// there is refused rather than guessed: in those locales "1.234" is 1234 with a thousands
+// separator.
+std::string decimal_point_cell(std::string cell, const std::string& location, const std::string& column) {
+  const std::size_t comma = cell.find(',');
+  if (comma != std::string::npos && cell.find(',', comma + 1) == std::string::npos &&
+      cell.find('.') == std::string::npos) {
+    std::string with_point = cell;
+    with_point[comma] = '.';
+    if (try_parse_double(with_point)) return with_point;
+  }
+  if (comma == std::string::npos && cell.find('.') != std::string::npos && try_parse_double(cell)) {
+    throw_bad_value(location, "column " + column, cell,
+                    "a decimal comma like every number of a ';'-separated file (1,5; a point may be a "
+                    "thousands separator there)");
+  }
+  return cell;
 }
 
 }  // namespace
@@ -70,19 +115,21 @@ std::vector<double> CsvTable::numeric_column(std::string_view name) const {
 }
 
 CsvTable read_csv(const std::string& path) {
-  const std::string text = detail::read_text_file(path);
+  const std::string file = detail::read_text_file(path);
+  const std::string_view text = detail::without_byte_order_mark(file);
   CsvTable table;
-  table.path = path;
+  table.path = detail::source_name(path);
   long line_number = 0;
   std::size_t start = 0;
   while (start < text.size()) {
     const std::size_t end = std::min(text.find('\n', start), text.size());
-    const std::string_view line = trim(std::string_view(text).substr(start, end - start));
+    const std::string_view line = trim(text.substr(start, end - start));
     start = end + 1;
     ++line_number;
     if (line.empty() || line.front() == '#') continue;
-    const std::string location = file_location(path, line_number);
-    auto cells = split_cells(line, location);
+    const std::string location = file_location(table.path, line_number);
+    if (table.header.empty()) table.separator = header_separator(line, location);
+    auto cells = split_cells(line, table.separator, location);
     if (table.header.empty()) {
       for (std::size_t i = 0; i < cells.size(); ++i) {
         if (cells[i].empty()) throw InputError(location, "header column " + std::to_string(i + 1) + " has no name");
@@ -97,10 +144,15 @@ CsvTable read_csv(const std::string& path) {
       throw InputError(location, "row has " + std::to_string(cells.size()) + " cells: expected " +
                                      std::to_string(table.header.size()) + " like the header");
     }
+    if (table.separator == ';') {
+      for (std::size_t i = 0; i < cells.size(); ++i) {
+        cells[i] = decimal_point_cell(std::move(cells[i]), location, table.header[i]);
+      }
+    }
     table.rows.push_back(std::move(cells));
     table.line_numbers.push_back(line_number);
   }
-  if (table.header.empty()) throw InputError(path, "empty file: expected a header row of column names");
+  if (table.header.empty()) throw InputError(table.path, "empty file: expected a header row of column names");
   return table;
 }
 

@@ -22,14 +22,30 @@ const IniSection* IniDocument::find(std::string_view name) const {
 
 std::string IniDocument::location(long line) const { return file_location(path, line); }
 
+namespace {
+
+// `line` up to an inline comment: a '#' or ';' after a blank (`median = 2.87  # from Fig. 3`).
+// The blank is required so that a value may still hold the characters themselves ("#3", "a;b").
+std::string_view without_inline_comment(std::string_view line) {
+  for (std::size_t i = 1; i < line.size(); ++i) {
+    if ((line[i] == '#' || line[i] == ';') && (line[i - 1] == ' ' || line[i - 1] == '\t')) {
+      return trim(line.substr(0, i));
+    }
+  }
+  return line;
+}
+
+}  // namespace
+
 IniDocument parse_ini(std::string_view text, std::string path) {
+  text = detail::without_byte_order_mark(text);
   IniDocument document{std::move(path), {}};
   document.sections.push_back(IniSection{"", 0, {}});
   long line_number = 0;
   std::size_t start = 0;
   while (start <= text.size()) {
     const std::size_t end = std::min(text.find('\n', start), text.size());
-    const std::string_view line = trim(text.substr(start, end - start));
+    const std::string_view line = without_inline_comment(trim(text.substr(start, end - start)));
     start = end + 1;
     ++line_number;
     if (line.empty() || line.front() == '#' || line.front() == ';') continue;
@@ -65,6 +81,8 @@ IniDocument parse_ini(std::string_view text, std::string path) {
   return document;
 }
 
-IniDocument read_ini(const std::string& path) { return parse_ini(detail::read_text_file(path), path); }
+IniDocument read_ini(const std::string& path) {
+  return parse_ini(detail::read_text_file(path), detail::source_name(path));
+}
 
 }  // namespace growthuq

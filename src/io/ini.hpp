@@ -3,7 +3,9 @@
 // too but forgets where a value came from, which users need in error messages.
 //
 // Format: `[section]` headers, `key = value` entries, full-line comments starting with '#'
-// or ';', blank lines. Entries before the first section belong to section "".
+// or ';', inline comments (a '#' or ';' after a blank, to the end of the line), blank lines.
+// A UTF-8 byte-order mark at the start is skipped; CRLF line ends are read like LF. Entries
+// before the first section belong to section "".
 #pragma once
 
 #include <string>

@@ -1,13 +1,17 @@
 #include "growthuq/io/output_file.hpp"
 
+#include <array>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <string_view>
 #include <utility>
+#include <vector>
 
+#include "core/interrupt.hpp"
 #include "growthuq/core/error.hpp"
 #include "read_text_file.hpp"
 
@@ -16,10 +20,39 @@ namespace growthuq {
 namespace detail {
 
 std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, std::string("cannot open: ") + std::strerror(errno));
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw InputError(path, "read failed");
+  namespace fs = std::filesystem;
+  const std::string name = source_name(path);
+  const auto too_large = [&] {
+    return InputError(name, "is larger than " + std::to_string(max_input_file_bytes >> 20) +
+                                " MiB, the limit of an input file: expected a text file (is it the file you meant?)");
+  };
+  std::ifstream file;
+  std::istream* in = &std::cin;
+  if (path != standard_input) {
+    std::error_code error;
+    const fs::file_status status = fs::status(path, error);
+    // Opened, a folder reads as an I/O error deep in the stream ("basic_filebuf::underflow").
+    if (status.type() == fs::file_type::directory) throw InputError(path, "is a directory: expected a file");
+    if (status.type() == fs::file_type::regular) {
+      const std::uintmax_t bytes = fs::file_size(path, error);
+      if (!error && bytes > max_input_file_bytes) throw too_large();
+    }
+    file.open(path, std::ios::binary);
+    if (!file) throw InputError(path, std::string("cannot open: ") + std::strerror(errno));
+    in = &file;
+  }
+  // Read in blocks up to the limit: a device or a pipe without end (/dev/zero, a stream piped
+  // to standard input) is refused instead of filling memory.
+  std::string text;
+  std::array<char, 1 << 16> block{};
+  while (*in) {
+    errno = 0;
+    in->read(block.data(), block.size());
+    const auto got = static_cast<std::size_t>(in->gcount());
+    if (text.size() + got > max_input_file_bytes) throw too_large();
+    text.append(block.data(), got);
+  }
+  if (in->bad()) throw InputError(name, std::string("read failed") + (errno != 0 ? std::string(": ") + std::strerror(errno) : ""));
   return text;
 }
 
@@ -60,6 +93,11 @@ void refuse_special_file(const std::string& path) {
 }  // namespace
 
 void check_can_write(const std::string& path, Overwrite overwrite) {
+  // The commands that can print a result on stdout check "-" themselves (cli/result_output.hpp);
+  // one reaching here would otherwise become a file called "-".
+  if (path == "-") {
+    throw InputError(path, "standard output cannot take this result: expected a file name (./- for a file named -)");
+  }
   refuse_special_file(path);
   std::error_code error;
   if (overwrite == Overwrite::refuse && fs::exists(path, error)) {
@@ -94,15 +132,16 @@ void move_into_place(const std::string& partial, const std::string& path) {
   fs::rename(partial, path, error);
   if (error) {
     std::remove(partial.c_str());
-    throw InputError(path, "cannot move the finished file into place: " + error.message());
+    throw WriteError(path, "cannot move the finished file into place: " + error.message());
   }
 }
 
 PartialFile::PartialFile(std::string path) : path_(std::move(path)), partial_(path_ + ".partial") {
   refuse_special_file(path_);
   prepare_partial_file(partial_);
+  removed_on_signal_ = std::make_unique<RemovedOnSignal>(partial_);
   out_.open(partial_, std::ios::binary | std::ios::trunc);
-  if (!out_) throw InputError(partial_, std::string("cannot create: ") + std::strerror(errno));
+  if (!out_) throw WriteError(partial_, std::string("cannot create: ") + std::strerror(errno));
 }
 
 PartialFile::~PartialFile() {
@@ -113,15 +152,31 @@ PartialFile::~PartialFile() {
 
 void PartialFile::write(std::string_view text) {
   out_.write(text.data(), static_cast<std::streamsize>(text.size()));
-  if (!out_) throw InputError(partial_, std::string("write failed: ") + std::strerror(errno));
+  if (!out_) throw WriteError(partial_, std::string("write failed: ") + std::strerror(errno));
+}
+
+void PartialFile::close() {
+  if (!out_.is_open()) return;
+  out_.flush();
+  out_.close();
+  if (!out_) throw WriteError(partial_, std::string("write failed: ") + std::strerror(errno));
 }
 
 void PartialFile::commit() {
-  out_.flush();
-  out_.close();
-  if (!out_) throw InputError(partial_, std::string("write failed: ") + std::strerror(errno));
+  close();
   committed_ = true;  // move_into_place removes the partial file itself when it fails
   move_into_place(partial_, path_);
+}
+
+void write_files_together(const std::vector<FileContent>& files, Overwrite overwrite) {
+  for (const FileContent& file : files) check_can_write(file.path, overwrite);
+  std::vector<std::unique_ptr<PartialFile>> written;
+  for (const FileContent& file : files) {
+    written.push_back(std::make_unique<PartialFile>(file.path));
+    written.back()->write(file.content);
+    written.back()->close();
+  }
+  for (const std::unique_ptr<PartialFile>& file : written) file->commit();
 }
 
 void write_file_atomically(const std::string& path, std::string_view content, Overwrite overwrite) {

@@ -1,6 +1,7 @@
 #include "growthuq/io/results_h5.hpp"
 
 #include <H5Cpp.h>
+#include <hdf5_hl.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -11,7 +12,9 @@
 #include <string_view>
 #include <utility>
 
+#include "core/interrupt.hpp"
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/units.hpp"
 
 // Why no compression: sampled doubles have random mantissas. Measured on ten columns of 1e6
 // lognormal doubles (h5py 3.7 on the same HDF5 1.10, 65536-value chunks): contiguous 80.0 MB in
@@ -67,9 +70,12 @@ H5::DSetCreatPropList untimed_dataset() {
   return properties;
 }
 
-H5::Group create_untimed_group(const H5::H5Location& parent, const std::string& name) {
+// With `in_creation_order` the group indexes its links by creation order too, which h5py
+// follows when iterating (f["lines"] lists the lines as the campaign does, not alphabetically).
+H5::Group create_untimed_group(const H5::H5Location& parent, const std::string& name, bool in_creation_order = false) {
   const hid_t properties = H5Pcreate(H5P_GROUP_CREATE);
   H5Pset_obj_track_times(properties, false);
+  if (in_creation_order) H5Pset_link_creation_order(properties, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED);
   const hid_t id = H5Gcreate2(parent.getId(), name.c_str(), H5P_DEFAULT, properties, H5P_DEFAULT);
   H5Pclose(properties);
   if (id < 0) throw H5::GroupIException("create_untimed_group", "H5Gcreate2 failed for " + name);
@@ -100,6 +106,107 @@ H5::DataSet write_vector(H5::Group& group, const std::string& name, const Eigen:
   const hsize_t size = static_cast<hsize_t>(vector.size());
   H5::DataSet dataset = group.createDataSet(name, H5::PredType::IEEE_F64LE, H5::DataSpace(1, &size), untimed_dataset());
   if (vector.size() > 0) dataset.write(vector.data(), H5::PredType::NATIVE_DOUBLE);
+  return dataset;
+}
+
+// Dimension scales (the HDF5 high-level H5DS API, as netCDF-4 writes them): xarray (engine
+// h5netcdf) names each axis of a dataset after the scale attached to it, so
+// xarray.open_dataset(path, group="lines/wild_type", engine="h5netcdf") has a dimension
+// `sample` instead of phony_dim_0, and opens at all without phony_dims. A dimension is a 1-D
+// dataset in the same group, named like it: an index (IndexValues below) or labels (strings,
+// e.g. the input names of a correlation matrix).
+std::size_t length_of(const H5::DataSet& dataset) {
+  hsize_t length = 0;
+  dataset.getSpace().getSimpleExtentDims(&length);
+  return static_cast<std::size_t>(length);
+}
+
+void make_dimension(const H5::DataSet& dataset, const std::string& name) {
+  if (H5DSset_scale(dataset.getId(), name.c_str()) < 0) {
+    throw H5::DataSetIException("H5DSset_scale", "cannot make " + name + " a dimension scale");
+  }
+}
+
+void attach_dimension(const H5::DataSet& dataset, const H5::DataSet& dimension, unsigned axis) {
+  if (H5DSattach_scale(dataset.getId(), dimension.getId(), axis) < 0) {
+    throw H5::DataSetIException("H5DSattach_scale", "cannot attach a dimension scale");
+  }
+}
+
+// What an index dimension holds. `sample` keeps 0 .. n-1 (the samples' index, read as such).
+// The others (table rows, curve points, components, replicates) are netCDF's "dimension but
+// not a variable": a dataset of the dimension's length that is never written, so it takes no
+// room in the file (stored, the `point` index of the relaxation curves made a raw-data
+// results.h5 30 % larger at 50 samples per line, measured); xarray shows it as a dimension
+// without coordinate and h5py reads zeros.
+enum class IndexValues { stored, none };
+
+constexpr const char* not_a_variable = "This is a netCDF dimension but not a netCDF variable.";
+
+// The index dimension `name` of `group` (created on first use), or, when `group` already has a
+// dataset of that name with another length, the index dimension "<name>_<length>".
+H5::DataSet index_dimension(H5::Group& group, const std::string& name, std::size_t length,
+                            IndexValues values = IndexValues::none) {
+  if (group.nameExists(name)) {
+    H5::DataSet existing = group.openDataSet(name);
+    if (length_of(existing) == length) return existing;
+    return index_dimension(group, name + "_" + std::to_string(length), length, values);
+  }
+  if (values == IndexValues::none) {
+    H5::DSetCreatPropList properties = untimed_dataset();
+    properties.setFillTime(H5D_FILL_TIME_NEVER);  // with late allocation (contiguous): no storage at all
+    const hsize_t size = length;
+    H5::DataSet dimension = group.createDataSet(name, H5::PredType::STD_U64LE, H5::DataSpace(1, &size), properties);
+    char scale_name[80];
+    std::snprintf(scale_name, sizeof scale_name, "%s%10zu", not_a_variable, length);  // as netCDF-4 names it
+    make_dimension(dimension, scale_name);
+    return dimension;
+  }
+  std::vector<std::uint64_t> index(length);
+  std::iota(index.begin(), index.end(), std::uint64_t{0});
+  H5::DataSet dimension = write_vector(group, name, H5::PredType::STD_U64LE, H5::PredType::NATIVE_UINT64,
+                                       std::span<const std::uint64_t>(index));
+  make_dimension(dimension, name);
+  write_string_attribute(dimension, "units", "1");
+  return dimension;
+}
+
+// The label dimension `name` holding `labels` for an axis of `length` (created on first use).
+// Labels that do not fit the axis (an empty matrix of a line without analysis) or a dimension
+// of that name holding other labels give the index dimension "<name>_<length>" instead.
+H5::DataSet label_dimension(H5::Group& group, const std::string& name, const std::vector<std::string>& labels,
+                            std::size_t length) {
+  if (labels.size() != length) return index_dimension(group, name + "_" + std::to_string(length), length);
+  const H5::StrType type = string_type();
+  if (group.nameExists(name)) {
+    H5::DataSet existing = group.openDataSet(name);
+    bool same = length_of(existing) == length;
+    if (same && length > 0) {
+      std::vector<char*> stored(length);
+      existing.read(stored.data(), type);
+      for (std::size_t i = 0; i < length; ++i) same = same && labels[i] == stored[i];
+      H5Dvlen_reclaim(type.getId(), existing.getSpace().getId(), H5P_DEFAULT, stored.data());
+    }
+    return same ? existing : index_dimension(group, name + "_" + std::to_string(length), length);
+  }
+  const hsize_t size = length;
+  H5::DataSet dimension = group.createDataSet(name, type, H5::DataSpace(1, &size), untimed_dataset());
+  std::vector<const char*> pointers;
+  for (const std::string& label : labels) pointers.push_back(label.c_str());
+  if (!pointers.empty()) dimension.write(pointers.data(), type);
+  make_dimension(dimension, name);
+  return dimension;
+}
+
+// A matrix whose rows and columns are named: dimensions `row_dimension` and `column_dimension`
+// holding the names (units "1": the matrices are rank correlations).
+H5::DataSet write_named_matrix(H5::Group& group, const std::string& name, const Eigen::MatrixXd& matrix,
+                               const std::string& row_dimension, const std::vector<std::string>& rows,
+                               const std::string& column_dimension, const std::vector<std::string>& columns) {
+  H5::DataSet dataset = write_matrix(group, name, matrix);
+  write_string_attribute(dataset, "units", "1");
+  attach_dimension(dataset, label_dimension(group, row_dimension, rows, static_cast<std::size_t>(matrix.rows())), 0);
+  attach_dimension(dataset, label_dimension(group, column_dimension, columns, static_cast<std::size_t>(matrix.cols())), 1);
   return dataset;
 }
 
@@ -138,6 +245,44 @@ void write_summary(H5::Group& group, const std::string& name, const std::vector<
   const hsize_t size = rows.size();
   H5::DataSet dataset = group.createDataSet(name, memory, H5::DataSpace(1, &size), untimed_dataset());
   if (!rows.empty()) dataset.write(rows.data(), memory);
+  attach_dimension(dataset, index_dimension(group, name + "_row", rows.size()), 0);
+}
+
+// A result column as results.h5 stores it: in its quantity's default unit whatever unit the line
+// file used, so a quantity has one dataset name in every line (einf_frac whether a line file
+// gives einf in % or as a fraction; samples.csv keeps the line file's unit). Converted through
+// SI (x * from.to_si / to.to_si), as exact as any decimal rescaling. A quantity the engine does
+// not know keeps its unit.
+struct StoredColumn {
+  std::string name;
+  const Unit* unit;
+  std::string long_name;     // the quantity's description, for plot labels
+  std::vector<double> converted;  // empty when the column is stored as it is
+};
+
+StoredColumn stored_column(const ResultColumn& column) {
+  const Quantity* quantity = find_quantity(column.quantity);
+  StoredColumn stored{column.column_name(), column.unit, column.quantity, {}};
+  if (quantity == nullptr) return stored;
+  stored.long_name = std::string(quantity->description);
+  if (column.unit->symbol == quantity->default_unit) return stored;
+  stored.unit = &find_unit(quantity->default_unit, "results.h5", column.quantity);
+  stored.name = column_name(column.quantity, *stored.unit);
+  stored.converted.reserve(column.values.size());
+  for (const double value : column.values) stored.converted.push_back(value * column.unit->to_si / stored.unit->to_si);
+  return stored;
+}
+
+// Column names of the line file (as the analysis names its rows) renamed as stored.
+std::vector<std::string> stored_names(const std::vector<std::string>& names, const std::vector<StoredColumn>& stored,
+                                      const std::vector<ResultColumn>& columns) {
+  std::vector<std::string> renamed = names;
+  for (std::string& name : renamed) {
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      if (columns[c].column_name() == name) name = stored[c].name;
+    }
+  }
+  return renamed;
 }
 
 void check_line_name(const std::string& name, const std::string& file) {
@@ -155,7 +300,7 @@ std::vector<std::string> status_names() {
 }
 
 [[noreturn]] void rethrow_hdf5(const std::string& file, const H5::Exception& error) {
-  throw InputError(file, "HDF5 write failed in " + error.getFuncName() + ": " + error.getDetailMsg());
+  throw WriteError(file, "HDF5 write failed in " + error.getFuncName() + ": " + error.getDetailMsg());
 }
 
 }  // namespace
@@ -163,6 +308,7 @@ std::vector<std::string> status_names() {
 struct ResultsH5Writer::File {
   std::string partial;
   H5::H5File file;
+  RemovedOnSignal removed_on_signal{partial};  // a kill leaves no results.h5.partial
 };
 
 ResultsH5Writer::ResultsH5Writer(std::string path, Overwrite overwrite)
@@ -173,13 +319,27 @@ ResultsH5Writer::ResultsH5Writer(std::string path, Overwrite overwrite)
   const std::string partial = path_ + ".partial";
   prepare_partial_file(partial);
   try {
-    file_ = std::make_unique<File>(File{partial, H5::H5File(partial, H5F_ACC_TRUNC)});
-    create_untimed_group(file_->file, "lines");
+    file_ = std::make_unique<File>(partial, H5::H5File(partial, H5F_ACC_TRUNC));
+    create_untimed_group(file_->file, "lines", /*in_creation_order=*/true);
   } catch (const H5::Exception& error) {
     file_.reset();
     std::remove(partial.c_str());
-    throw InputError(partial, "cannot create the HDF5 file (" + error.getDetailMsg() + ")");
+    throw WriteError(partial, "cannot create the HDF5 file (" + error.getDetailMsg() + ")");
   }
+}
+
+void ResultsH5Writer::declare_lines(const std::vector<std::string>& names) {
+  if (!file_) throw std::logic_error("ResultsH5Writer::declare_lines after finish()");
+  if (!lines_written_.empty() || !lines_declared_.empty()) throw std::logic_error("ResultsH5Writer::declare_lines: too late");
+  try {
+    for (const std::string& name : names) {
+      check_line_name(name, file_->partial);
+      create_untimed_group(file_->file, "lines/" + name);
+    }
+  } catch (const H5::Exception& error) {
+    rethrow_hdf5(file_->partial, error);
+  }
+  lines_declared_ = names;
 }
 
 void ResultsH5Writer::write_line(const LineResult& result, const std::vector<QuantitySummary>& summaries,
@@ -198,40 +358,67 @@ void ResultsH5Writer::write_line(const LineResult& result, const std::vector<Qua
     }
   }
   try {
-    H5::Group group = create_untimed_group(file_->file, "lines/" + result.name);
+    const bool declared = std::find(lines_declared_.begin(), lines_declared_.end(), result.name) != lines_declared_.end();
+    H5::Group group = declared ? file_->file.openGroup("lines/" + result.name)
+                               : create_untimed_group(file_->file, "lines/" + result.name);
     write_u64_attribute(group, "samples", samples);
+    // `sample` (0-based index of the sample in its line) is the dimension of every column.
+    const H5::DataSet sample = index_dimension(group, "sample", samples, IndexValues::stored);
+    std::vector<StoredColumn> stored;
     for (const ResultColumn& column : result.columns) {
-      H5::DataSet dataset = write_vector(group, column.column_name(), H5::PredType::IEEE_F64LE,
-                                         H5::PredType::NATIVE_DOUBLE, std::span<const double>(column.values));
+      stored.push_back(stored_column(column));
+      const StoredColumn& as_stored = stored.back();
+      const std::span<const double> values =
+          as_stored.converted.empty() ? std::span<const double>(column.values) : std::span<const double>(as_stored.converted);
+      H5::DataSet dataset = write_vector(group, as_stored.name, H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, values);
+      attach_dimension(dataset, sample, 0);
       write_string_attribute(dataset, "quantity", column.quantity);
-      write_string_attribute(dataset, "unit", std::string(column.unit->symbol));
+      write_string_attribute(dataset, "unit", std::string(as_stored.unit->symbol));
+      write_string_attribute(dataset, "units", std::string(as_stored.unit->symbol));
+      write_string_attribute(dataset, "long_name", as_stored.long_name);
       write_string_attribute(dataset, "role", column.is_input ? "input" : "output");
     }
-    std::vector<std::uint64_t> index(samples);
-    std::iota(index.begin(), index.end(), std::uint64_t{0});
-    write_vector(group, "sample", H5::PredType::STD_U64LE, H5::PredType::NATIVE_UINT64, std::span<const std::uint64_t>(index));
+    std::vector<std::string> column_order;  // HDF5 lists datasets alphabetically; samples.csv's order
+    for (const StoredColumn& column : stored) column_order.push_back(column.name);
+    write_strings_attribute(group, "columns", column_order);
     std::vector<std::uint8_t> codes(samples);
     for (std::size_t i = 0; i < samples; ++i) codes[i] = static_cast<std::uint8_t>(result.status[i]);
     H5::DataSet status =
         write_vector(group, "status", H5::PredType::STD_U8LE, H5::PredType::NATIVE_UINT8, std::span<const std::uint8_t>(codes));
+    attach_dimension(status, sample, 0);
     write_strings_attribute(status, "names", status_names());
+    write_string_attribute(status, "units", "1");
 
     write_summary(group, "summary", summaries);
 
     H5::Group correlation = create_untimed_group(group, "input_rank_correlation");
     write_strings_attribute(correlation, "names", result.correlated_inputs);
-    write_matrix(correlation, "achieved", result.achieved_spearman);
-    if (result.target_spearman.size() > 0) write_matrix(correlation, "target", result.target_spearman);
+    write_named_matrix(correlation, "achieved", result.achieved_spearman, "row", result.correlated_inputs, "column",
+                       result.correlated_inputs);
+    if (result.target_spearman.size() > 0) {
+      write_named_matrix(correlation, "target", result.target_spearman, "row", result.correlated_inputs, "column",
+                         result.correlated_inputs);
+    }
 
     H5::Group analysis_group = create_untimed_group(group, "analysis");
     write_u64_attribute(analysis_group, "samples_used", analysis.samples_used);
     write_strings_attribute(analysis_group, "notes", analysis.notes);
-    H5::DataSet spearman = write_matrix(analysis_group, "input_output_spearman", analysis.input_output_spearman);
-    write_strings_attribute(spearman, "rows", analysis.inputs);
-    write_strings_attribute(spearman, "columns", analysis.outputs);
-    write_vector(analysis_group, "explained_variance_ratio", analysis.explained_variance_ratio);
+    const std::vector<std::string> inputs = stored_names(analysis.inputs, stored, result.columns);
+    const std::vector<std::string> outputs = stored_names(analysis.outputs, stored, result.columns);
+    const std::vector<std::string> variables = stored_names(analysis.pca_names, stored, result.columns);
+    H5::DataSet spearman =
+        write_named_matrix(analysis_group, "input_output_spearman", analysis.input_output_spearman, "input", inputs, "output", outputs);
+    write_strings_attribute(spearman, "rows", inputs);
+    write_strings_attribute(spearman, "columns", outputs);
+    const std::size_t components = static_cast<std::size_t>(analysis.explained_variance_ratio.size());
+    H5::DataSet ratio = write_vector(analysis_group, "explained_variance_ratio", analysis.explained_variance_ratio);
+    write_string_attribute(ratio, "units", "1");
+    attach_dimension(ratio, index_dimension(analysis_group, "component", components), 0);
     H5::DataSet loadings = write_matrix(analysis_group, "loadings", analysis.loadings);
-    write_strings_attribute(loadings, "rows", analysis.pca_names);
+    write_string_attribute(loadings, "units", "1");
+    write_strings_attribute(loadings, "rows", variables);
+    attach_dimension(loadings, label_dimension(analysis_group, "variable", variables, static_cast<std::size_t>(analysis.loadings.rows())), 0);
+    attach_dimension(loadings, index_dimension(analysis_group, "component", static_cast<std::size_t>(analysis.loadings.cols())), 1);
   } catch (const H5::Exception& error) {
     rethrow_hdf5(file_->partial, error);
   }
@@ -252,6 +439,7 @@ void ResultsH5Writer::finish(const CampaignMetadata& metadata) {
     write_u64_attribute(root, "seed", metadata.seed);
     write_f64_attribute(root, "kappa", metadata.kappa);
     write_u64_attribute(root, "samples_per_line", metadata.samples_per_line);
+    write_strings_attribute(root, "line_order", lines_declared_.empty() ? lines_written_ : lines_declared_);
     root.close();
     file_->file.close();
   } catch (const H5::Exception& error) {
@@ -343,28 +531,46 @@ void ResultsH5Writer::write_table(const std::string& path, const std::vector<Ext
     const hsize_t size = rows;
     H5::DataSet dataset = group.createDataSet(leaf, type, H5::DataSpace(1, &size), untimed_dataset());
     if (rows > 0) dataset.write(buffer.data(), type);
+    std::vector<std::string> units;
+    for (const ExtraColumn& column : columns) units.push_back(column.unit);
+    write_strings_attribute(dataset, "column_units", units);
+    attach_dimension(dataset, index_dimension(group, leaf + "_row", rows), 0);
   } catch (const H5::Exception& error) {
     rethrow_hdf5(file_->partial, error);
   }
 }
 
-void ResultsH5Writer::write_array(const std::string& path, const std::vector<double>& values) {
+namespace {
+
+template <typename T>
+void write_array_at(H5::H5File& file, const std::string& path, const H5::PredType& file_type, const H5::PredType& memory_type,
+                    std::span<const T> values, const std::string& unit, const std::string& dimension) {
+  const auto [parent, leaf] = split_path(path);
+  H5::Group group = group_at(file, parent);
+  H5::DataSet dataset = write_vector(group, leaf, file_type, memory_type, values);
+  write_string_attribute(dataset, "units", unit);
+  attach_dimension(dataset, index_dimension(group, dimension, values.size()), 0);
+}
+
+}  // namespace
+
+void ResultsH5Writer::write_array(const std::string& path, const std::vector<double>& values, const std::string& unit,
+                                  const std::string& dimension) {
   if (!file_) throw std::logic_error("ResultsH5Writer::write_array after finish()");
   try {
-    const auto [parent, leaf] = split_path(path);
-    H5::Group group = group_at(file_->file, parent);
-    write_vector(group, leaf, H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, std::span<const double>(values));
+    write_array_at(file_->file, path, H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, std::span<const double>(values),
+                   unit, dimension);
   } catch (const H5::Exception& error) {
     rethrow_hdf5(file_->partial, error);
   }
 }
 
-void ResultsH5Writer::write_array(const std::string& path, const std::vector<std::int32_t>& values) {
+void ResultsH5Writer::write_array(const std::string& path, const std::vector<std::int32_t>& values, const std::string& unit,
+                                  const std::string& dimension) {
   if (!file_) throw std::logic_error("ResultsH5Writer::write_array after finish()");
   try {
-    const auto [parent, leaf] = split_path(path);
-    H5::Group group = group_at(file_->file, parent);
-    write_vector(group, leaf, H5::PredType::STD_I32LE, H5::PredType::NATIVE_INT32, std::span<const std::int32_t>(values));
+    write_array_at(file_->file, path, H5::PredType::STD_I32LE, H5::PredType::NATIVE_INT32,
+                   std::span<const std::int32_t>(values), unit, dimension);
   } catch (const H5::Exception& error) {
     rethrow_hdf5(file_->partial, error);
   }

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <deque>
+#include <exception>
 #include <string>
 #include <thread>
 #include <utility>
@@ -117,9 +118,13 @@ class MpiPool final : public Pool {
     for (std::uint64_t i = 0; i < all.size(); ++i) {
       if (!skip || !skip(all[i])) todo.push_back(i);
     }
+    sink_failure_ = nullptr;
     const std::string outcome = broadcast(rank_ == 0 ? coordinate(all, todo, work, sink) : serve(all, work));
     if (outcome.empty()) return;
     if (outcome.front() == 'S') throw PoolInterrupted(std::stoi(outcome.substr(1)));
+    // The sink's own exception on rank 0, as the serial pool lets it through (a checkpoint that
+    // could not be written is a WriteError there, which keeps the checkpoint for a resume).
+    if (sink_failure_) std::rethrow_exception(std::exchange(sink_failure_, nullptr));
     throw PoolError(outcome.substr(1));
   }
 
@@ -196,7 +201,10 @@ class MpiPool final : public Pool {
       try {
         sink(range, values);
       } catch (const std::exception& error) {
-        if (failure.empty()) failure = "rank 0 could not keep items [" + std::to_string(range.begin) + ", " + std::to_string(range.end) + "): " + error.what();
+        if (failure.empty()) {
+          failure = "rank 0 could not keep items [" + std::to_string(range.begin) + ", " + std::to_string(range.end) + "): " + error.what();
+          sink_failure_ = std::current_exception();
+        }
       }
     };
     for (int round = 0; round < queued_per_worker; ++round) {
@@ -332,6 +340,7 @@ class MpiPool final : public Pool {
     }
   }
 
+  std::exception_ptr sink_failure_;  // rank 0: what the sink threw in the current run()
   int rank_ = 0;
   int size_ = 1;
   int local_size_ = 1;

@@ -1,5 +1,4 @@
-// The pool of one process, and the chunking and launcher detection shared by both pools.
-#include <cstdlib>
+// The pool of one process, and the chunking shared by both pools.
 #include <stdexcept>
 #include <utility>
 
@@ -70,12 +69,5 @@ class SerialPool final : public Pool {
 }  // namespace
 
 std::unique_ptr<Pool> make_serial_pool() { return std::make_unique<SerialPool>(); }
-
-bool launched_by_mpi() {
-  // Open MPI's mpirun sets OMPI_COMM_WORLD_SIZE; PMIx-based launchers set PMIX_RANK.
-  return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr || std::getenv("PMIX_RANK") != nullptr;
-}
-
-std::unique_ptr<Pool> make_pool() { return launched_by_mpi() ? make_mpi_pool() : make_serial_pool(); }
 
 }  // namespace growthuq

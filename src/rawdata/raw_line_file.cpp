@@ -50,8 +50,11 @@ std::string existing_file(const IniDocument& document, const IniEntry& entry) {
   return path;
 }
 
-std::vector<FitFamily> families_of(const IniDocument& document, const IniSection& section) {
+// The families a section lists, or the defaults for a fraction (einf: beta first) or a
+// positive quantity.
+std::vector<FitFamily> families_of(const IniDocument& document, const IniSection& section, bool fraction) {
   const IniEntry* entry = section.find("families");
+  if (!entry && fraction) return {std::begin(fraction_fit_families), std::end(fraction_fit_families)};
   if (!entry) return {std::begin(all_fit_families), std::end(all_fit_families)};
   std::vector<FitFamily> families;
   std::string_view rest = entry->value;
@@ -59,7 +62,7 @@ std::vector<FitFamily> families_of(const IniDocument& document, const IniSection
     const std::size_t comma = rest.find(',');
     const std::string_view name = trim(rest.substr(0, comma));
     const auto family = parse_fit_family(name);
-    if (!family) throw_bad_value(document.location(entry->line), "families", name, "lognormal, normal, gamma or weibull");
+    if (!family) throw_bad_value(document.location(entry->line), "families", name, "lognormal, normal, gamma, weibull or beta (for einf)");
     if (std::find(families.begin(), families.end(), *family) != families.end()) {
       throw_bad_value(document.location(entry->line), "families", name, "each family once");
     }
@@ -85,7 +88,7 @@ RawMeasurement read_measurement(const IniDocument& document, const IniSection& s
   const IniEntry& unit = required_entry(document, section, "unit",
                                         "unit = " + std::string(quantity.default_unit) + " (the unit of the column's values)");
   measurement.unit = &detail::unit_of(document, unit, quantity);
-  measurement.families = families_of(document, section);
+  measurement.families = families_of(document, section, quantity.dimension == Dimension::fraction);
   return measurement;
 }
 
@@ -106,7 +109,9 @@ RawRelaxation read_relaxation(const IniDocument& document, const IniSection& sec
       throw_bad_value(document.location(fit->line), "fit", fit->value, "step or ramp_aware");
     }
   }
-  relaxation.families = families_of(document, section);
+  relaxation.families = families_of(document, section, false);
+  // One list when given (beta fails for tau, with its reason); by default einf's own.
+  relaxation.einf_families = section.find("families") ? relaxation.families : families_of(document, section, true);
   return relaxation;
 }
 

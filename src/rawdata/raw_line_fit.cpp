@@ -1,5 +1,6 @@
 #include "growthuq/rawdata/raw_line_fit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -14,6 +15,27 @@
 namespace growthuq {
 namespace {
 
+// A value more than this factor from its column's median is no tube of the line: tubes of one
+// line differ by a factor of a few (the shipped data by less than 10), a typo (1e300 for 3.0, a
+// value in another unit) by far more. One such value would stretch every fitted law and move
+// the line's results (a median turgor of 6e4 MPa) without a word.
+constexpr double gross_outlier_factor = 1000.0;
+
+void refuse_gross_outliers(const CsvTable& table, const std::string& column, const std::vector<double>& values,
+                           const std::vector<std::size_t>& rows) {
+  if (values.empty()) return;
+  std::vector<double> sorted = values;
+  std::sort(sorted.begin(), sorted.end());
+  const std::size_t n = sorted.size();
+  const double median = n % 2 == 1 ? sorted[n / 2] : sorted[n / 2 - 1] + 0.5 * (sorted[n / 2] - sorted[n / 2 - 1]);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (values[i] <= median * gross_outlier_factor && values[i] >= median / gross_outlier_factor) continue;
+    throw_bad_value(table.row_location(rows[i]), column, table.rows[rows[i]][table.column_index(column)],
+                    "a value within a factor " + format_double(gross_outlier_factor) + " of the column's median " +
+                        format_double(median) + " (a typo, or a value in another unit?)");
+  }
+}
+
 // The values of one column, in its unit. Blank cells are tubes where the quantity was not
 // measured; anything else must be a number of the quantity's physical range.
 std::vector<double> read_measurement_column(const RawMeasurement& measurement) {
@@ -21,6 +43,7 @@ std::vector<double> read_measurement_column(const RawMeasurement& measurement) {
   const std::size_t column = table.column_index(measurement.column);
   const bool fraction = measurement.variable == "einf";
   std::vector<double> values;
+  std::vector<std::size_t> rows;
   for (std::size_t row = 0; row < table.rows.size(); ++row) {
     const std::string& cell = table.rows[row][column];
     if (cell.empty()) continue;
@@ -32,7 +55,9 @@ std::vector<double> read_measurement_column(const RawMeasurement& measurement) {
                                : "a positive " + std::string(find_quantity(measurement.variable)->description));
     }
     values.push_back(value);
+    rows.push_back(row);
   }
+  if (!fraction) refuse_gross_outliers(table, measurement.column, values, rows);
   return values;
 }
 
@@ -80,15 +105,29 @@ VariableFit fit_variable_by_aic(std::string variable, const Unit& unit, std::vec
   fit.families = std::move(families);
   double best = std::numeric_limits<double>::infinity();
   std::string failures;
+  // Where the fraction is 1 in the values' unit (100 in %), for fractions (einf).
+  const bool fraction = unit.dimension == Dimension::fraction;
+  const double fraction_upper = 1.0 / unit.to_si;
   for (const FitFamily family : fit.families) {
     FamilyFit candidate;
     candidate.family = family;
     try {
-      FitResult result = fit_distribution(family, fit.values);
+      if (family == FitFamily::beta && !fraction) {
+        throw InputError("", "the beta law is a law of fractions (einf); " + fit.variable + " is in " +
+                                 std::string(unit.symbol));
+      }
+      FitResult result = fit_distribution(family, fit.values, fraction_upper);
       // A law that would draw inf or 0 (one mistyped value can stretch a fit that far) is no
       // fit: another family may still describe the data (sampled_range.hpp).
       if (const std::optional<std::string> problem = sampled_range_problem(result.distribution, unit.to_si)) {
         throw InputError("", describe(result.distribution) + " cannot be sampled: " + *problem);
+      }
+      // Nor is a law of a fraction that would draw values above 1 (100 %) or below 0: however
+      // good its AIC, those samples are no tube's.
+      if (fraction) {
+        if (const std::optional<std::string> problem = fraction_range_problem(result.distribution, fraction_upper)) {
+          throw InputError("", describe(result.distribution) + " would draw fractions outside [0, 1]: " + *problem);
+        }
       }
       candidate.result = std::move(result);
       if (candidate.result->aic < best) {
@@ -163,7 +202,7 @@ RawLineFit fit_raw_line(const RawLineFile& raw, const RawFitSettings& settings) 
                                std::to_string(curves) + " curves fitted";
     result.variables.push_back(fit_variable_by_aic("tau", unit_named("s"), std::move(tau), raw.relaxation.families,
                                                    "tau_slow of " + source, location));
-    result.variables.push_back(fit_variable_by_aic("einf", unit_named("frac"), std::move(einf), raw.relaxation.families,
+    result.variables.push_back(fit_variable_by_aic("einf", unit_named("frac"), std::move(einf), raw.relaxation.einf_families,
                                                    "E_inf/E_r(0) of " + source, location));
   }
   result.distributions = line_distributions_of(raw, result.variables);

@@ -54,6 +54,14 @@ Metadata metadata_of_row(const CsvTable& table, std::size_t row, std::optional<d
   meta.diameter = positive_cell(table, row, diameter_column);
   meta.thickness = positive_cell(table, row, thickness_column);
   meta.probe_radius = table.has_column(radius_column.name) ? probe_radius_cell(table, row) : *probe_radius;
+  // A radius given for every curve (--rho-um, a campaign's probe_radius_um) and another in the
+  // sheet: which one the user meant cannot be told, and using either silently changes E.
+  if (probe_radius && std::abs(meta.probe_radius - *probe_radius) > 1e-12 * *probe_radius) {
+    throw_bad_value(meta.location, radius_column.name, table.rows[row][table.column_index(radius_column.name)],
+                    "the probe radius given for every curve, " + format_double(*probe_radius / radius_column.to_si) +
+                        " um (--rho-um, or the campaign's probe_radius_um): give the radius in one place, or the same "
+                        "in both");
+  }
   return meta;
 }
 

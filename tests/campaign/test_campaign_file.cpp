@@ -38,6 +38,16 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text.replace(at, from.size(), to);
 }
 
+// The message parse_campaign gives for `text` read as `file`, or "no error".
+std::string parse_error(const std::string& text, const std::string& file) {
+  try {
+    parse_campaign(text, file);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "no error";
+}
+
 }  // namespace
 
 TEST_CASE("a valid campaign is read with SI values and resolved paths") {
@@ -82,14 +92,7 @@ TEST_CASE("command-line overrides") {
 TEST_CASE("each mistake is one error naming file and line") {
   const CampaignFolder folder;
   const std::string file = folder.path();
-  auto error_of = [&](const std::string& text) -> std::string {
-    try {
-      parse_campaign(text, file);
-    } catch (const InputError& error) {
-      return error.what();
-    }
-    return "no error";
-  };
+  const auto error_of = [&](const std::string& text) { return parse_error(text, file); };
   CHECK(error_of(replaced(valid, "seed = 7", "seed = -7")) == file + ":3: seed = '-7': expected a whole number from 0 to 18446744073709551615");
   CHECK(error_of(replaced(valid, "samples = 300", "samples = 0")) == file + ":4: samples = '0': expected a whole number from 1 to 4294967295");
   CHECK(error_of(replaced(valid, "outputs = p, E, eta, v", "outputs = p, turgor")).starts_with(file + ":5: outputs = 'turgor': expected quantities among k, h"));
@@ -127,14 +130,7 @@ TEST_CASE("a line comes from exactly one of a line file and raw data; the data b
   CHECK(campaign.data_uncertainty.samples == 500);
   CHECK(parse_campaign(raw, file).data_uncertainty.replicates == 0);
 
-  auto error_of = [&](const std::string& text) -> std::string {
-    try {
-      parse_campaign(text, file);
-    } catch (const InputError& error) {
-      return error.what();
-    }
-    return "no error";
-  };
+  const auto error_of = [&](const std::string& text) { return parse_error(text, file); };
   CHECK(error_of(replaced(raw, "raw = lines/raw.ini", "raw = lines/raw.ini\ndistributions = lines/m1.ini")) ==
         file + ":15: [line m1] needs exactly one of 'distributions = <line file>' and 'raw = <raw data file>' (both are given)");
   CHECK(error_of(replaced(raw, "raw = lines/raw.ini\n", "")) ==
@@ -145,4 +141,26 @@ TEST_CASE("a line comes from exactly one of a line file and raw data; the data b
   CHECK(error_of(raw + "[data_uncertainty]\nsamples = 10\n") == file + ":18: [data_uncertainty] lacks the required key 'replicates'");
   CHECK(error_of(raw + "[data_uncertainty]\nreplicates = 10\nsamples = 5\n") ==
         file + ":20: samples = '5': expected a whole number from 10 to 10000000");
+}
+
+TEST_CASE("a list item given twice and an empty required value are errors, not silently doubled or empty") {
+  const CampaignFolder folder;
+  const std::string file = folder.path();
+  const auto error_of = [&](const std::string& text) { return parse_error(text, file); };
+  // outputs = p, p would give two summary rows of p.
+  CHECK(error_of(replaced(valid, "outputs = p, E, eta, v", "outputs = p, E, p")) ==
+        file + ":5: outputs = 'p, E, p': expected each item once ('p' is listed twice)");
+  CHECK(error_of(replaced(valid, "output_dir = out/test", "output_dir = out/test\nformats = csv, csv")) ==
+        file + ":7: formats = 'csv, csv': expected each item once ('csv' is listed twice)");
+  // name = (empty) made a nameless campaign, output_dir = (empty) the current folder.
+  CHECK(error_of(replaced(valid, "name = test", "name =")) == file + ":2: name = '': expected a value (it is required)");
+  CHECK(error_of(replaced(valid, "output_dir = out/test", "output_dir = ")) ==
+        file + ":6: output_dir = '': expected a value (it is required)");
+  // --lines wt,wt ran the line twice into the same files.
+  Campaign campaign = parse_campaign(valid, file);
+  CHECK_THROWS_WITH_AS(apply_overrides(campaign, {.lines = "wt, m1,wt"}),
+                       "command line: --lines = 'wt, m1,wt': expected each item once ('wt' is listed twice)", InputError);
+  // The same list without the repeat is taken as given.
+  apply_overrides(campaign, {.lines = "wt, m1"});
+  CHECK(campaign.lines.size() == 2);
 }

@@ -6,7 +6,6 @@
 // completed directory, a new run into an interrupted one.
 #include <doctest/doctest.h>
 
-#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -38,45 +37,6 @@ std::vector<std::string> split(const std::string& text, char separator) {
     if (!item.empty()) items.push_back(item);
   }
   return items;
-}
-
-// Starts `program arguments...` in `directory` with stdout and stderr to files there; `environment`
-// holds extra NAME=VALUE settings.
-pid_t start(const std::vector<std::string>& command, const fs::path& directory,
-            const std::vector<std::string>& environment = {}) {
-  const pid_t pid = fork();
-  REQUIRE(pid >= 0);
-  if (pid == 0) {
-    // Only async-signal-safe calls here in principle; chdir/open/dup2/putenv/execv are.
-    if (chdir(directory.c_str()) != 0) _exit(126);
-    const int out = open("stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int err = open("stderr.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(out, 1);
-    dup2(err, 2);
-    for (const std::string& setting : environment) putenv(const_cast<char*>(setting.c_str()));
-    std::vector<char*> argv;
-    for (const std::string& word : command) argv.push_back(const_cast<char*>(word.c_str()));
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
-  return pid;
-}
-
-int wait_for(pid_t pid) {
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return status;
-}
-
-CliOutcome run_in(const fs::path& directory, const std::vector<std::string>& command,
-                  const std::vector<std::string>& environment = {}) {
-  return outcome_in(directory, wait_for(start(command, directory, environment)));
-}
-
-std::vector<std::string> cli(std::vector<std::string> arguments) {
-  arguments.insert(arguments.begin(), GROWTHUQ_CLI);
-  return arguments;
 }
 
 // A copy of the small test campaign whose line files are copies too (so a test may change one),
@@ -289,7 +249,7 @@ TEST_CASE("with --no-checkpoint an interrupted run keeps nothing and says so") {
   const pid_t pid = start(command, work);
   // The partial results file appears when sampling starts; the run then lasts over a second.
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  while (!fs::exists(work / "out" / "samples.csv.partial")) {
+  while (!fs::exists(work / "out" / "staging" / "samples.csv.partial")) {
     int status = 0;
     REQUIRE_MESSAGE(waitpid(pid, &status, WNOHANG) == 0, "the run ended before it could be interrupted");
     REQUIRE(std::chrono::steady_clock::now() < deadline);

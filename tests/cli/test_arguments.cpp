@@ -46,12 +46,22 @@ Run growthuq(const std::string& arguments) {
 }
 
 // "usage: growthuq run CAMPAIGN.ini [options] ..." -> "growthuq run CAMPAIGN.ini [options] ...".
+// The usage the help prints first, its lines (wrapped to the help's width) joined by spaces.
 std::string usage_of(const std::string& command) {
   const Run help = growthuq(command + " --help");
   REQUIRE(help.status == 0);
-  const std::string first_line = help.out.substr(0, help.out.find('\n'));
-  REQUIRE(first_line.rfind("usage: ", 0) == 0);
-  return first_line.substr(7);
+  const std::string paragraph = help.out.substr(0, help.out.find("\n\n"));
+  REQUIRE(paragraph.rfind("usage: ", 0) == 0);
+  std::string usage;
+  for (std::size_t at = 7; at < paragraph.size(); ++at) {
+    if (paragraph[at] != '\n') {
+      usage += paragraph[at];
+      continue;
+    }
+    usage += ' ';
+    at = paragraph.find_first_not_of(' ', at + 1) - 1;
+  }
+  return usage;
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "support/cli_inputs.hpp"
 #include "support/cli_run.hpp"
 #include "support/scratch_directory.hpp"
 #include "support/special_files.hpp"
@@ -19,21 +20,6 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::string source = GROWTHUQ_SOURCE_DIR;
-
-const char* const line_file =
-    "[line]\nname = test_line\n\n"
-    "[k]\nlaw = lognormal\nmedian = 2.87\niqr = 0.83\nunit = N/m\nsource = published median and IQR\n";
-
-const char* const stiffness_csv = "k_N_per_m\n2.41\n3.12\n2.05\n2.87\n4.40\n2.66\n3.35\n1.92\n2.71\n3.80\n";
-
-const char* const tubes_csv = "k_N_per_m,d_um,d0_um,h_nm\n2.87,6.56,5.35,145\n";
-
-// The files every command below reads, written into `root`.
-void write_inputs(const fs::path& root) {
-  spit(root / "line.ini", line_file);
-  spit(root / "k.csv", stiffness_csv);
-  spit(root / "tubes.csv", tubes_csv);
-}
 
 // Every .partial file under `root`: none may be left behind.
 std::vector<std::string> partial_files(const fs::path& root) {
@@ -86,7 +72,7 @@ TEST_CASE("--force never replaces a device: every command that writes files refu
   for (const Case& c : cases) {
     CAPTURE(c.command);
     const ScratchDirectory scratch("cli_device");
-    write_inputs(scratch.root);
+    write_cli_inputs(scratch.root);
     if (!c.directory.empty()) fs::create_directories(scratch.root / c.directory);
     const fs::path target = scratch.root / c.out;
     SpecialKind kind = SpecialKind::null_device;
@@ -106,7 +92,7 @@ TEST_CASE("--force never replaces a device: every command that writes files refu
 
 TEST_CASE("a result printed on a full stdout is an error, not exit status 0") {
   const ScratchDirectory scratch("cli_full");
-  write_inputs(scratch.root);
+  write_cli_inputs(scratch.root);
   const fs::path full = scratch.root / "full";
   if (!make_special_file(full, SpecialKind::full_device)) {
     MESSAGE("not root: no full device can be made here, so a full stdout is not checked");

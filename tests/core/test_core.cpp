@@ -6,6 +6,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/core/printable.hpp"
 #include "growthuq/core/units.hpp"
 
 using namespace growthuq;
@@ -90,4 +91,24 @@ TEST_CASE("named unit conversions are the unit table's factors and their decimal
     CHECK(std::fabs(to_um(from_um(x)) - x) <= std::nextafter(x, 2 * x) - x);
     CHECK(std::fabs(to_nm(from_nm(x)) - x) <= std::nextafter(x, 2 * x) - x);
   }
+}
+
+TEST_CASE("printable escapes every control character, and only those, once") {
+  using growthuq::printable;
+  CHECK(printable("plain text, 2.87 N/m") == "plain text, 2.87 N/m");
+  CHECK(printable("red\x1b[31m.ini") == "red\\x1b[31m.ini");
+  CHECK(printable(std::string_view("a\0b", 3)) == "a\\x00b");
+  CHECK(printable("tab\tnew\nline\rbell\x07" "del\x7f") == "tab\\x09new\\x0aline\\x0dbell\\x07del\\x7f");
+  // UTF-8 text stays; the C1 controls as UTF-8 (U+009B, a CSI) are escaped byte by byte.
+  CHECK(printable("\xc3\xa9 \xce\xbcm") == "\xc3\xa9 \xce\xbcm");
+  CHECK(printable("\xc2\x9b" "2J \xc2\xa0") == "\\xc2\\x9b2J \xc2\xa0");
+  // Idempotent: a message built from an escaped one is not escaped twice.
+  CHECK(printable(printable("a\x1b")) == "a\\x1b");
+}
+
+TEST_CASE("an InputError's message is printable whatever input it quotes") {
+  const growthuq::InputError error("in\x1b[2J.ini:3", "law = 'x\ny': expected lognormal");
+  CHECK(std::string(error.what()) == "in\\x1b[2J.ini:3: law = 'x\\x0ay': expected lognormal");
+  CHECK(error.location() == "in\\x1b[2J.ini:3");
+  CHECK(error.problem() == "law = 'x\\x0ay': expected lognormal");
 }

@@ -8,7 +8,7 @@ Every u below is the exact double written in the table (1 - 2^-53 is the double 
 1 - 1e-16); mpmath works on those exact binary values, so the references are the true
 quantiles/cdfs of the double inputs, rounded once to 17 significant digits.
 """
-from mpmath import mp, mpf, log, exp, sqrt, pi, ncdf, gammainc, gamma, findroot, expm1, log1p
+from mpmath import mp, mpf, log, exp, sqrt, pi, ncdf, gammainc, gamma, findroot, expm1, log1p, betainc, beta
 
 mp.dps = 40
 
@@ -160,6 +160,29 @@ class Weibull:
         return self.lam * (-log1p(-mpf(u))) ** (1 / self.k)
 
 
+class Beta:
+    def __init__(self, a, b, upper):
+        self.a, self.b, self.upper = mpf(a), mpf(b), mpf(upper)
+        self.cpp = f"Beta({a!r}, {b!r}, {upper!r})"
+
+    def pdf(self, x):
+        y = x / self.upper
+        return y ** (self.a - 1) * (1 - y) ** (self.b - 1) / (beta(self.a, self.b) * self.upper)
+
+    def cdf(self, x):
+        return betainc(self.a, self.b, 0, x / self.upper, regularized=True)
+
+    def quantile(self, u):
+        """Bisection in t = ln y (lower half) or t = ln(1 - y) (upper half), y = x / upper."""
+        u = mpf(u)
+        if u <= mpf(1) / 2:
+            f = lambda t: log(betainc(self.a, self.b, 0, exp(t), regularized=True)) - log(u)
+            return self.upper * exp(bracketed(f, -2000, 0))
+        c = 1 - u
+        f = lambda t: log(betainc(self.a, self.b, 1 - exp(t), 1, regularized=True)) - log(c)
+        return self.upper * (1 - exp(bracketed(f, -2000, 0)))
+
+
 class Empirical:
     data = [2.5, 1.0, 4.0, 2.5, 7.0]  # sorted: 1, 2.5, 2.5, 4, 7; F(x(i)) = (i-1)/4
 
@@ -202,6 +225,9 @@ CASES = [
     (Gamma(1000.0, 0.01), U_ALL, []),
     (Weibull(1.7, 2.2), U_ALL, [1e-4, 1.0, 2.2, 9.0]),
     (Weibull(0.6, 1.0), [1e-150, 1e-16, 0.01, 0.25, 0.5, 0.75, 0.99, ONE_MINUS], [1e-6, 0.5, 3.0, 300.0]),
+    (Beta(2.0, 5.0, 1.0), U_ALL, [1e-6, 0.1, 0.3, 0.9, 0.999]),
+    (Beta(8.0, 4.0, 100.0), U_ALL, [5.0, 50.0, 75.0, 99.0]),
+    (Beta(0.7, 3.0, 1.0), [1e-150, 1e-16, 0.01, 0.25, 0.5, 0.75, 0.99, ONE_MINUS], [1e-8, 0.05, 0.5, 0.99]),
     (Empirical(), [0.0, 0.1, 0.25, 0.3, 0.5, 0.9, 1.0], [1.0, 1.75, 2.5, 3.0, 6.9]),
 ]
 wild_type_k = Lognormal(0.0, 1.0)

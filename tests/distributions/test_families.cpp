@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 #include "growthuq/core/error.hpp"
@@ -208,6 +209,9 @@ TEST_CASE("contract: NaN, infinite and out-of-domain parameters are rejected, na
       {[] { (void)Gamma(1, infinity); }, "gamma: scale = 'inf': expected a positive finite number"},
       {[] { (void)Weibull(not_a_number, 1); }, "weibull: shape = 'nan': expected a positive finite number"},
       {[] { (void)Weibull(1, -2); }, "weibull: scale = '-2': expected a positive finite number"},
+      {[] { (void)Beta(0, 1); }, "beta: alpha = '0': expected a positive finite number"},
+      {[] { (void)Beta(1, not_a_number); }, "beta: beta = 'nan': expected a positive finite number"},
+      {[] { (void)Beta(1, 1, -100); }, "beta: upper = '-100': expected a positive finite number"},
       {[] { (void)Empirical({1.0}); }, nullptr},
       {[] { (void)Empirical({2.0, 2.0, 2.0}); }, nullptr},
       {[] { (void)Empirical({1.0, not_a_number}); }, "empirical: values[2] = 'nan': expected a finite number"},
@@ -235,9 +239,41 @@ TEST_CASE("lognormal from median and IQR reproduces them (Eq. D1)") {
   }
 }
 
+TEST_CASE("beta quantile against closed forms: Beta(1, 1) is uniform, Beta(a, 1) is u^(1/a), Beta(1, b) is 1 - (1 - u)^(1/b)") {
+  for (const double u : {1e-12, 0.01, 0.3, 0.5, 0.77, 0.999}) {
+    CAPTURE(u);
+    CHECK(quantile(Beta(1, 1), u) == doctest::Approx(u).epsilon(1e-14));
+    CHECK(quantile(Beta(1, 1, 100), u) == doctest::Approx(100 * u).epsilon(1e-14));
+    CHECK(quantile(Beta(3.5, 1), u) == doctest::Approx(std::pow(u, 1 / 3.5)).epsilon(1e-14));
+    CHECK(quantile(Beta(1, 2.5), u) == doctest::Approx(-std::expm1(std::log1p(-u) / 2.5)).epsilon(1e-13));
+    CHECK(cdf(Beta(3.5, 1, 100), 100 * std::pow(u, 1 / 3.5)) == doctest::Approx(u).epsilon(1e-13));
+  }
+  // Beta(0.5, 0.5), the arcsine law: F^-1(u) = sin^2(pi u / 2).
+  for (const double u : {0.05, 0.3, 0.9}) {
+    CHECK(quantile(Beta(0.5, 0.5), u) == doctest::Approx(std::pow(std::sin(std::numbers::pi * u / 2), 2)).epsilon(1e-13));
+  }
+  // scipy 1.10.1 (Debian 12), scipy.stats.beta.ppf(0.75, 30, 15) and .ppf(0.2, 0.7, 3):
+  CHECK(quantile(Beta(30, 15), 0.75) == doctest::Approx(0.7154461097620011).epsilon(1e-13));
+  CHECK(quantile(Beta(0.7, 3), 0.2) == doctest::Approx(0.031795261094028804).epsilon(1e-13));
+}
+
 TEST_CASE("family_name and describe") {
+  CHECK(describe(Distribution(Beta(2, 5, 100))) == "beta(alpha=2, beta=5, upper=100)");
   CHECK(family_name(Distribution(Gamma(2, 3))) == "gamma");
   CHECK(family_name(Distribution(TruncatedNormal(0, 1, 0, 1))) == "truncated_normal");
   CHECK(describe(Distribution(Weibull(1.5, 2))) == "weibull(shape=1.5, scale=2)");
   CHECK(describe(Distribution(Normal(1, 0.25))) == "normal(mean=1, sd=0.25)");
+}
+
+TEST_CASE("parameter_values: the parameters describe() rounds, as the exact doubles") {
+  using Parameters = std::vector<std::pair<std::string, double>>;
+  // 25.950912345 prints as 25.9509 in describe(): the numbers keep every digit.
+  CHECK(parameter_values(Distribution(Gamma(25.950912345, 0.10752412345))) ==
+        Parameters{{"shape", 25.950912345}, {"scale", 0.10752412345}});
+  CHECK(describe(Distribution(Gamma(25.950912345, 0.10752412345))) == "gamma(shape=25.9509, scale=0.107524)");
+  CHECK(parameter_values(Distribution(Lognormal(-1.25, 0.3))) == Parameters{{"mu", -1.25}, {"sigma", 0.3}});
+  CHECK(parameter_values(Distribution(TruncatedNormal(0.5, 2, 0, 1))) ==
+        Parameters{{"mean", 0.5}, {"sd", 2}, {"lower", 0}, {"upper", 1}});
+  CHECK(parameter_values(Distribution(Empirical({3, 1, 2, 7}))) == Parameters{{"n", 4}, {"min", 1}, {"max", 7}});
+  CHECK(describe(Distribution(Empirical({3, 1, 2, 7}))) == "empirical(n=4, min=1, max=7)");
 }

@@ -129,6 +129,54 @@ TEST_CASE("large samples from known laws: parameters recovered within 4 standard
   }
 }
 
+TEST_CASE("beta fit: parameters recovered from a large sample within 4 standard errors, in frac and in %") {
+  // Asymptotic covariance n^-1 J^-1 with the Fisher information per value
+  // J = [[psi'(a) - psi'(a+b), -psi'(a+b)], [-psi'(a+b), psi'(b) - psi'(a+b)]].
+  const std::size_t n = 20000;
+  const double a = 2.5, b = 1.4;
+  const double t = gsl_sf_psi_1(a + b), jaa = gsl_sf_psi_1(a) - t, jbb = gsl_sf_psi_1(b) - t;
+  const double determinant = jaa * jbb - t * t;
+  const double se_a = std::sqrt(jbb / determinant / static_cast<double>(n));
+  const double se_b = std::sqrt(jaa / determinant / static_cast<double>(n));
+  for (const double upper : {1.0, 100.0}) {
+    CAPTURE(upper);
+    const auto data = draw(Beta(a, b, upper), n, 5);
+    const FitResult result = fit_distribution(FitFamily::beta, data, upper);
+    const Beta& fit = law_of<Beta>(result);
+    CHECK(std::fabs(fit.alpha() - a) <= 4 * se_a);
+    CHECK(std::fabs(fit.beta() - b) <= 4 * se_b);
+    CHECK(fit.upper() == upper);
+    // The score vanishes at the estimate: psi(a) - psi(a+b) = mean ln y (the likelihood equation).
+    double mean_log = 0.0;
+    for (const double x : data) mean_log += std::log(x / upper);
+    mean_log /= static_cast<double>(n);
+    CHECK(gsl_sf_psi(fit.alpha()) - gsl_sf_psi(fit.alpha() + fit.beta()) == doctest::Approx(mean_log).epsilon(1e-10));
+    // Log-likelihood in closed form against the direct sum of log pdf.
+    double direct = 0.0;
+    for (const double x : data) direct += std::log(pdf(result.distribution, x));
+    CHECK(result.log_likelihood == doctest::Approx(direct).epsilon(1e-10));
+    CHECK(result.aic == doctest::Approx(4.0 - 2.0 * direct).epsilon(1e-10));
+  }
+  // Beta data: the beta law wins AIC among every family (the same n = 20000, seed 6).
+  const auto data = draw(Beta(6.0, 3.0), n, 6);
+  FitFamily best = FitFamily::normal;
+  double best_aic = HUGE_VAL;
+  for (const FitFamily family : fraction_fit_families) {
+    const double aic = fit_distribution(family, data).aic;
+    if (aic < best_aic) best_aic = aic, best = family;
+  }
+  CHECK(best == FitFamily::beta);
+}
+
+TEST_CASE("beta fit: values at 0 or at the upper end are named") {
+  CHECK_THROWS_WITH_AS(fit_distribution(FitFamily::beta, std::vector<double>{0.2, 0.5, 1.0}),
+                       "fit beta: value 3 = '1': expected a number in (0, 1) (the beta law lives strictly inside)",
+                       InputError);
+  CHECK_THROWS_WITH_AS(fit_distribution(FitFamily::beta, std::vector<double>{0.0, 50.0, 60.0}, 100.0),
+                       "fit beta: value 1 = '0': expected a number in (0, 100)", InputError);
+  CHECK(parse_fit_family("beta") == FitFamily::beta);
+}
+
 TEST_CASE("fits reject data they cannot use, naming the value") {
   CHECK_THROWS_WITH_AS(fit_distribution(FitFamily::normal, std::vector<double>{1.0}),
                        "fit normal: needs at least two values, got 1", InputError);

@@ -123,6 +123,11 @@ TEST_CASE("growthuq fit reports bad data with file and line, and exits 2") {
   const Run wrong_unit = run_fit(path + " --column stiffness --variable k --unit MPa");
   CHECK(wrong_unit.output == "growthuq fit: error: --unit = 'MPa': expected a unit of stiffness for k\n");
   CHECK(run_fit(path + " --column stiffness --variable k --unit N/m").status == 0);
+  // beta is a family of raw-data fits of einf (fit-line, campaigns), not of this command: it used
+  // to leave no family to fit and no table to print.
+  const Run beta = run_fit(path + " --column stiffness --variable k --unit N/m --family beta");
+  CHECK(beta.status == 2);
+  CHECK(beta.output == "growthuq fit: error: --family = 'beta': expected lognormal, normal, gamma or weibull\n");
 }
 
 TEST_CASE("growthuq fit skips positive laws with a note when a value is not positive") {

@@ -89,7 +89,7 @@ TEST_CASE("line file: every law and its keys") {
       "[d]\nlaw = truncated_normal\nmean = 6\nsd = 1\nlower = 4\nupper = inf\nunit = um\nsource = s\n"
       "[d0]\nlaw = uniform\nlower = 4\nupper = 6\nunit = um\nsource = s\n"
       "[tau]\nlaw = gamma\nshape = 4\nscale = 1.5\nunit = s\nsource = s\n"
-      "[einf]\nlaw = weibull\nshape = 8\nscale = 0.65\nunit = frac\nsource = illustrative\nnote = why\n"
+      "[einf]\nlaw = beta\nalpha = 8\nbeta = 4\nunit = %\nsource = illustrative\nnote = why\n"
       "[v_exp]\nlaw = empirical\nvalues = 0.03, 0.02,0.04 , 0.05\nunit = um/s\nsource = s\n");
   const LineDistributions line = read_line_file(path);
   REQUIRE(line.variables.size() == 7);
@@ -99,6 +99,7 @@ TEST_CASE("line file: every law and its keys") {
   CHECK(std::get<Uniform>(line.variables[3].distribution).upper() == 6);
   CHECK(std::get<Gamma>(line.variables[4].distribution).scale() == 1.5);
   CHECK(line.variables[5].note == "why");
+  CHECK(std::get<Beta>(line.variables[5].distribution).upper() == 100.0);  // the unit's 100 %
   CHECK(std::get<Empirical>(line.variables[6].distribution).sorted_data() == std::vector<double>{0.02, 0.03, 0.04, 0.05});
   CHECK(line.variables[4].line == 29);
 
@@ -110,6 +111,24 @@ TEST_CASE("line file: every law and its keys") {
     CHECK(describe(d) == describe(variable.distribution));
     for (const double u : {0.1, 0.5, 0.9}) CHECK(quantile(d, u) == quantile(variable.distribution, u));
   }
+}
+
+TEST_CASE("line file: a fraction's law must keep every drawn value in [0, 100] %; beta is for fractions only") {
+  // Weibull(8, 0.65): its quantile at 1 - 2^-53 is 0.65 (ln 2^53)^(1/8) = 0.65 x 1.5690 = 1.0199 > 1.
+  const std::string weibull = error_of("[einf]\nlaw = weibull\nshape = 8\nscale = 0.65\nunit = frac\nsource = s\n");
+  CAPTURE(weibull);
+  CHECK(weibull.rfind(":3: [einf] law weibull(shape=8, scale=0.65) in frac: its quantile at probability 1 - 2^-53 "
+                      "(1 - 1.1e-16) is 1.01988", 0) == 0);
+  CHECK(weibull.find(", above 1 (a fraction of 1): expected a law of values in [0, 1] as a fraction") != std::string::npos);
+  // A normal in % reaching below 0.
+  CHECK(error_of("[einf]\nlaw = normal\nmean = 60\nsd = 10\nunit = %\nsource = s\n").find(
+            "its quantile at probability 1 - 2^-53 (1 - 1.1e-16) is 142.") != std::string::npos);
+  // The shipped truncated normal on [0, 100] % and a beta stay inside.
+  CHECK(error_of("[einf]\nlaw = truncated_normal\nmean = 65\nsd = 14\nlower = 0\nupper = 100\nunit = %\nsource = s\n") ==
+        "no error");
+  CHECK(error_of("[einf]\nlaw = beta\nalpha = 0.3\nbeta = 0.2\nunit = frac\nsource = s\n") == "no error");
+  CHECK(error_of("[k]\nlaw = beta\nalpha = 2\nbeta = 3\nunit = N/m\nsource = s\n") ==
+        ":4: law = 'beta': expected a law of k (apparent stiffness (CFM indentation)): beta is a law of fractions (einf)");
 }
 
 TEST_CASE("line file: each mistake is one error naming file and line") {
@@ -133,7 +152,7 @@ TEST_CASE("line file: each mistake is one error naming file and line") {
   CHECK(error_of("[k]\nlaw = lognormal\nmedian = 2.87\niqr = 0.3\nunit = N/m\nsource = illustrative\n") ==
         ":3: [k] source = illustrative needs a one-line 'note' saying why the value was chosen");
   CHECK(error_of("[k]\nlaw = cauchy\nmedian = 2.87\nunit = N/m\nsource = s\n") ==
-        ":4: law = 'cauchy': expected one of lognormal, normal, truncated_normal, uniform, gamma, weibull, empirical");
+        ":4: law = 'cauchy': expected one of lognormal, normal, truncated_normal, uniform, gamma, weibull, beta, empirical");
   CHECK(error_of("[k]\nlaw = normal\nmean = 2.87\nunit = N/m\nsource = s\n") ==
         ":3: [k] law = normal needs 'sd' (parameters: mean, sd)");
   CHECK(error_of("[k]\nlaw = uniform\nlower = 3\nupper = 2\nunit = N/m\nsource = s\n") ==
@@ -197,4 +216,20 @@ TEST_CASE("sampled_range_problem: the ends of the drawn range, in the law's unit
   // a stratum into the first of 2^32 - 1 strata.
   CHECK(highest_drawn_probability == std::nextafter(1.0, 0.0));
   CHECK(lowest_drawn_probability <= 0x1.0p-54 / 4294967295.0);
+}
+
+TEST_CASE("a law whose median is not positive is refused: most of its draws are impossible values") {
+  // Every measured variable is positive; k = normal(-3, 1) draws no positive stiffness at all.
+  const std::string none = error_of("[k]\nlaw = normal\nmean = -3\nsd = 1\nunit = N/m\nsource = table\n");
+  CAPTURE(none);
+  CHECK(none.rfind(":3: [k] law ", 0) == 0);
+  CHECK(none.find(" in N/m: its median -3 is not positive: expected a law of positive values for k, the apparent "
+                  "stiffness") != std::string::npos);
+  CHECK(error_of("[d]\nlaw = uniform\nlower = -8\nupper = 0\nunit = um\nsource = table\n").find("its median -4 is not positive") !=
+        std::string::npos);
+  // Median exactly 0: half the draws impossible.
+  CHECK(error_of("[h]\nlaw = normal\nmean = 0\nsd = 10\nunit = nm\nsource = table\n").find("its median 0 is not positive") !=
+        std::string::npos);
+  // A positive median with a tail below 0 (2 % here) stays accepted: those samples are flagged.
+  CHECK(error_of("[k]\nlaw = normal\nmean = 2\nsd = 1\nunit = N/m\nsource = table\n") == "no error");
 }

@@ -7,6 +7,7 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/io/csv.hpp"
 #include "io/ini.hpp"
+#include "io/read_text_file.hpp"
 #include "growthuq/io/output_file.hpp"
 
 using namespace growthuq;
@@ -64,4 +65,31 @@ TEST_CASE("atomic writes refuse to overwrite unless allowed") {
   CHECK(read_csv(path).rows[0][0] == "2");
   CHECK_FALSE(std::filesystem::exists(path + ".partial"));
   std::filesystem::remove(path);
+}
+
+TEST_CASE("an input file that is a directory or too large is refused by name, before it is read") {
+  namespace fs = std::filesystem;
+  const fs::path folder = temporary_path("input_folder");
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  const auto error_of = [](const std::string& path) -> std::string {
+    try {
+      read_csv(path);
+    } catch (const InputError& error) {
+      return error.what();
+    }
+    return "no error";
+  };
+  CHECK(error_of(folder.string()) == folder.string() + ": is a directory: expected a file");
+  // A sparse file one byte over the limit: refused from its size, without reading 256 MiB.
+  const fs::path large = folder / "large.csv";
+  std::ofstream(large) << "a\n1\n";
+  fs::resize_file(large, detail::max_input_file_bytes + 1);
+  CHECK(error_of(large.string()) == large.string() +
+                                        ": is larger than 256 MiB, the limit of an input file: expected a text file (is it "
+                                        "the file you meant?)");
+  // Cut back to its text, the same file reads.
+  fs::resize_file(large, 4);
+  CHECK(read_csv(large.string()).rows.at(0).at(0) == "1");
+  fs::remove_all(folder);
 }

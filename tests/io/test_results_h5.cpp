@@ -5,7 +5,9 @@
 #include <doctest/doctest.h>
 
 #include <H5Cpp.h>
+#include <hdf5_hl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -50,6 +52,7 @@ LineResult wild_type() {
   line.name = "wild_type";
   line.columns = {column_of("k", "N/m", true, {2.87, 3.1, 2.2, 4.05, 1.9, 2.5}),
                   column_of("d0", "um", true, {5.35, 5.9, 4.8, 6.2, 5.0, 5.1}),
+                  column_of("einf", "%", true, {65, 70, 55, 80, 60, 72}),  // stored as einf_frac
                   column_of("p", "MPa", false, {0.31, missing, 0.22, 0.45, 0.18, 0.27}),
                   column_of("v", "um/s", false, {0.028, missing, 0.0, 0.041, 0.012, 0.02})};
   line.columns.back().valued_statuses = {SampleStatus::no_growth};  // as the growth evaluator declares v
@@ -91,9 +94,11 @@ CampaignMetadata metadata() {
   return m;
 }
 
+// The campaign's order is not alphabetical: the file records it (attribute line_order, and /lines
+// lists its groups in it).
 void write_campaign(const std::string& path, Overwrite overwrite = Overwrite::refuse) {
   ResultsH5Writer writer(path, overwrite);
-  for (const LineResult& line : {wild_type(), xxt1_xxt2()}) writer.write_line(line, summaries_of(line), analyze_line(line));
+  for (const LineResult& line : {xxt1_xxt2(), wild_type()}) writer.write_line(line, summaries_of(line), analyze_line(line));
   writer.finish(metadata());
 }
 
@@ -205,12 +210,32 @@ void check_line(const H5::H5File& file, const LineResult& line) {
   CAPTURE(line.name);
   const H5::Group group = file.openGroup("lines/" + line.name);
   CHECK(read_scalar<std::uint64_t>(group, "samples", H5::PredType::NATIVE_UINT64) == line.samples());
+  const H5::DataSet sample = group.openDataSet("sample");
+  CHECK(H5DSis_scale(sample.getId()) > 0);
+  std::vector<std::string> column_order;  // as written, einf in % named as stored
   for (const ResultColumn& column : line.columns) {
-    const H5::DataSet dataset = group.openDataSet(column.column_name());
-    check_same(read_doubles(dataset), {column.values.begin(), column.values.end()});
+    column_order.push_back(column.unit->symbol == "%" ? "einf_frac" : column.column_name());
+  }
+  CHECK(read_strings(group, "columns") == column_order);
+  for (const ResultColumn& column : line.columns) {
+    CAPTURE(column.quantity);
+    const bool in_percent = column.unit->symbol == "%";  // einf: stored as a fraction, named einf_frac
+    const H5::DataSet dataset = group.openDataSet(in_percent ? "einf_frac" : column.column_name());
+    const std::vector<double> stored = read_doubles(dataset);
+    if (in_percent) {
+      const std::vector<double> fractions = {0.65, 0.70, 0.55, 0.80, 0.60, 0.72};  // by hand
+      REQUIRE(stored.size() == fractions.size());
+      for (std::size_t i = 0; i < stored.size(); ++i) CHECK(stored[i] == doctest::Approx(fractions[i]).epsilon(1e-15));
+      CHECK_FALSE(group.nameExists("einf_pct"));
+    } else {
+      check_same(stored, {column.values.begin(), column.values.end()});
+    }
     CHECK(read_string(dataset, "quantity") == column.quantity);
-    CHECK(read_string(dataset, "unit") == column.unit->symbol);
+    CHECK(read_string(dataset, "unit") == (in_percent ? "frac" : column.unit->symbol));
+    CHECK(read_string(dataset, "units") == (in_percent ? "frac" : column.unit->symbol));
+    CHECK(read_string(dataset, "long_name") == find_quantity(column.quantity)->description);
     CHECK(read_string(dataset, "role") == (column.is_input ? "input" : "output"));
+    CHECK(H5DSis_attached(dataset.getId(), sample.getId(), 0) > 0);
   }
   const H5::DataSet status = group.openDataSet("status");
   CHECK(status.getDataType() == H5::PredType::STD_U8LE);
@@ -223,6 +248,7 @@ void check_line(const H5::H5File& file, const LineResult& line) {
   for (std::size_t code = 0; code < names.size(); ++code) CHECK(names[code] == to_string(static_cast<SampleStatus>(code)));
   std::vector<std::uint64_t> index(line.samples());
   group.openDataSet("sample").read(index.data(), H5::PredType::NATIVE_UINT64);
+  CHECK(read_string(group.openDataSet("sample"), "units") == "1");
   for (std::size_t i = 0; i < index.size(); ++i) CHECK(index[i] == i);
 
   check_summaries(read_summary(group.openDataSet("summary")), summaries_of(line));
@@ -242,13 +268,18 @@ void check_line(const H5::H5File& file, const LineResult& line) {
   const H5::DataSet spearman = analysis_group.openDataSet("input_output_spearman");
   check_same(read_doubles(spearman, &dims), row_major(analysis.input_output_spearman));
   CHECK(dims == std::vector<hsize_t>{analysis.inputs.size(), analysis.outputs.size()});
-  CHECK(read_strings(spearman, "rows") == analysis.inputs);
+  // The analysis names its rows by the line file's columns; the file by the stored ones.
+  std::vector<std::string> stored_inputs = analysis.inputs, stored_variables = analysis.pca_names;
+  for (std::vector<std::string>* renamed : {&stored_inputs, &stored_variables}) {
+    std::replace(renamed->begin(), renamed->end(), std::string("einf_pct"), std::string("einf_frac"));
+  }
+  CHECK(read_strings(spearman, "rows") == stored_inputs);
   CHECK(read_strings(spearman, "columns") == analysis.outputs);
   check_same(read_doubles(analysis_group.openDataSet("explained_variance_ratio")),
              std::vector<double>(analysis.explained_variance_ratio.begin(), analysis.explained_variance_ratio.end()));
   const H5::DataSet loadings = analysis_group.openDataSet("loadings");
   check_same(read_doubles(loadings), row_major(analysis.loadings));
-  CHECK(read_strings(loadings, "rows") == analysis.pca_names);
+  CHECK(read_strings(loadings, "rows") == stored_variables);
 }
 
 }  // namespace
@@ -270,20 +301,21 @@ TEST_CASE("results.h5 reads back exactly with the HDF5 C++ API") {
   CHECK(read_scalar<std::uint64_t>(root, "seed", H5::PredType::NATIVE_UINT64) == expected.seed);
   CHECK(read_scalar<double>(root, "kappa", H5::PredType::NATIVE_DOUBLE) == expected.kappa);
   CHECK(read_scalar<std::uint64_t>(root, "samples_per_line", H5::PredType::NATIVE_UINT64) == 6);
+  CHECK(read_strings(root, "line_order") == std::vector<std::string>{"xxt1 xxt2", "wild_type"});
   CHECK(file.openGroup("lines").getNumObjs() == 2);
 
   check_line(file, wild_type());
   check_line(file, xxt1_xxt2());
 
-  std::vector<QuantitySummary> all = summaries_of(wild_type());
-  for (const QuantitySummary& s : summaries_of(xxt1_xxt2())) all.push_back(s);
+  std::vector<QuantitySummary> all = summaries_of(xxt1_xxt2());
+  for (const QuantitySummary& s : summaries_of(wild_type())) all.push_back(s);
   check_summaries(read_summary(file.openDataSet("summary")), all);
 }
 
-TEST_CASE("h5py reads the file with its values and units") {
+TEST_CASE("h5py and xarray read the file with its values, units and named dimensions") {
   const char* python = "/usr/bin/python3";
-  if (!fs::exists(python) || std::system("/usr/bin/python3 -c 'import h5py, numpy' > /dev/null 2>&1") != 0) {
-    MESSAGE("skipped: /usr/bin/python3 with h5py and numpy is not available");
+  if (!fs::exists(python) || std::system("/usr/bin/python3 -c 'import h5py, numpy, xarray, h5netcdf' > /dev/null 2>&1") != 0) {
+    MESSAGE("skipped: /usr/bin/python3 with h5py, numpy, xarray and h5netcdf is not available (tools/install-deps)");
     return;
   }
   const Scratch scratch("h5py");
@@ -296,7 +328,7 @@ TEST_CASE("h5py reads the file with its values and units") {
   const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   INFO(report);
   CHECK(code == 0);
-  CHECK(report.find("results.h5 checked with h5py") != std::string::npos);
+  CHECK(report.find("results.h5 checked with h5py and xarray") != std::string::npos);
 }
 
 TEST_CASE("the .partial file is removed when the writer is abandoned") {
@@ -353,10 +385,11 @@ TEST_CASE("additional tables, arrays and attributes read back exactly") {
   {
     ResultsH5Writer writer(path, Overwrite::refuse);
     writer.write_table("lines/extra/fits", {ExtraColumn{"variable", {"k", "d0", "einf"}},
-                                            ExtraColumn{"aic", {}, {12.5, missing, -3.25}},
-                                            ExtraColumn{"n", {}, {}, {57, 46, -1}}});
-    writer.write_array("lines/extra/points/t_s", std::vector<double>{0.0, 0.02, missing});
-    writer.write_array("lines/extra/points/curve_index", std::vector<std::int32_t>{0, 0, 7});
+                                            ExtraColumn{"aic", {}, {12.5, missing, -3.25}, {}, "1"},
+                                            ExtraColumn{"n", {}, {}, {57, 46, -1}, "1"}});
+    writer.write_array("lines/extra/points/t_s", std::vector<double>{0.0, 0.02, missing}, "s", "point");
+    writer.write_array("lines/extra/points/curve_index", std::vector<std::int32_t>{0, 0, 7}, "1", "point");
+    writer.write_array("lines/extra/points/other", std::vector<double>{1.5, 2.5}, "uN", "point");  // another length
     writer.write_attribute("lines/extra/points", "fit", "step");
     writer.write_attribute("lines/extra/points/t_s", "scale", 2.5);
     CHECK_THROWS_AS(writer.write_table("lines/extra/fits", {ExtraColumn{"n", {}, {1.0}}}), InputError);  // written twice
@@ -401,6 +434,27 @@ TEST_CASE("additional tables, arrays and attributes read back exactly") {
   index.read(indices.data(), H5::PredType::NATIVE_INT32);
   CHECK(indices == std::vector<std::int32_t>{0, 0, 7});
   CHECK(read_string(file.openGroup("lines/extra/points"), "fit") == "step");
+  CHECK(read_strings(fits, "column_units") == std::vector<std::string>{"", "1", "1"});
+  const H5::DataSet fits_row = file.openDataSet("lines/extra/fits_row");
+  CHECK(H5DSis_scale(fits_row.getId()) > 0);
+  CHECK(H5DSis_attached(fits.getId(), fits_row.getId(), 0) > 0);
+  // A row index is a netCDF "dimension but not a variable": a scale of the right length that
+  // holds no values and takes no room (sample, the samples' index, is stored: check_line).
+  const H5::DataSet point = file.openDataSet("lines/extra/points/point");
+  CHECK(H5DSis_scale(point.getId()) > 0);
+  CHECK(point.getSpace().getSimpleExtentNpoints() == 3);
+  CHECK(point.getStorageSize() == 0);
+  char scale_name[80] = {};
+  H5DSget_scale_name(point.getId(), scale_name, sizeof scale_name);
+  CHECK(std::string(scale_name) == "This is a netCDF dimension but not a netCDF variable.         3");
+  CHECK(read_string(file.openDataSet("lines/extra/points/t_s"), "units") == "s");
+  CHECK(read_string(index, "units") == "1");
+  CHECK(H5DSis_attached(file.openDataSet("lines/extra/points/t_s").getId(), point.getId(), 0) > 0);
+  CHECK(H5DSis_attached(index.getId(), point.getId(), 0) > 0);
+  const H5::DataSet other = file.openDataSet("lines/extra/points/other");
+  const H5::DataSet point_2 = file.openDataSet("lines/extra/points/point_2");  // its own dimension
+  CHECK(H5DSis_attached(other.getId(), point_2.getId(), 0) > 0);
+  CHECK(H5DSis_attached(other.getId(), point.getId(), 0) == 0);
   CHECK(read_scalar<double>(file.openDataSet("lines/extra/points/t_s"), "scale", H5::PredType::NATIVE_DOUBLE) == 2.5);
 }
 
@@ -414,8 +468,8 @@ void write_every_kind_of_object(const std::string& path) {
   for (const LineResult& line : {wild_type(), xxt1_xxt2()}) writer.write_line(line, summaries_of(line), analyze_line(line));
   writer.write_table("fits", {ExtraColumn{"variable", {"k", "d0"}}, ExtraColumn{"aic", {}, {12.5, -3.25}}});
   writer.write_table("lines/wild_type/fits", {ExtraColumn{"n", {}, {}, {57, 46}}});
-  writer.write_array("lines/wild_type/curves/t_s", std::vector<double>{0.0, 0.02});
-  writer.write_array("lines/wild_type/curves/curve_index", std::vector<std::int32_t>{0, 7});
+  writer.write_array("lines/wild_type/curves/t_s", std::vector<double>{0.0, 0.02}, "s", "point");
+  writer.write_array("lines/wild_type/curves/curve_index", std::vector<std::int32_t>{0, 7}, "1", "point");
   writer.write_attribute("data_uncertainty", "method", "bootstrap");
   writer.write_attribute("lines/wild_type/curves/t_s", "scale", 2.5);
   writer.finish(metadata());
@@ -455,4 +509,31 @@ TEST_CASE("results.h5 records no times: the same results give the same bytes whe
   REQUIRE(a.size() > 0);
   CHECK(a.size() == b.size());
   CHECK(a == b);
+}
+
+TEST_CASE("declared lines keep the campaign's order whatever order they are written in") {
+  const Scratch scratch("declared");
+  const std::string path = scratch.path("results.h5");
+  {
+    ResultsH5Writer writer(path, Overwrite::refuse);
+    writer.declare_lines({"xxt1 xxt2", "wild_type"});
+    for (const LineResult& line : {wild_type(), xxt1_xxt2()}) writer.write_line(line, summaries_of(line), analyze_line(line));
+    CHECK_THROWS_AS(writer.declare_lines({"other"}), std::logic_error);
+    writer.finish(metadata());
+  }
+  const H5::H5File file(path, H5F_ACC_RDONLY);
+  CHECK(read_strings(file.openGroup("/"), "line_order") == std::vector<std::string>{"xxt1 xxt2", "wild_type"});
+  std::vector<std::string> created;  // /lines by creation order, as h5py lists it
+  for (hsize_t i = 0; i < 2; ++i) {
+    char name[64] = {};
+    H5Lget_name_by_idx(file.getId(), "lines", H5_INDEX_CRT_ORDER, H5_ITER_INC, i, name, sizeof name, H5P_DEFAULT);
+    created.emplace_back(name);
+  }
+  CHECK(created == std::vector<std::string>{"xxt1 xxt2", "wild_type"});
+  check_line(file, wild_type());  // written into its declared group
+  check_line(file, xxt1_xxt2());
+  // The root summary keeps the written order (as summary.csv does).
+  std::vector<QuantitySummary> all = summaries_of(wild_type());
+  for (const QuantitySummary& s : summaries_of(xxt1_xxt2())) all.push_back(s);
+  check_summaries(read_summary(file.openDataSet("summary")), all);
 }

@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/distributions/line_file.hpp"
+#include "growthuq/distributions/sampled_range.hpp"
 #include "growthuq/rawdata/raw_line_file.hpp"
 #include "growthuq/rawdata/raw_line_fit.hpp"
 
@@ -112,7 +114,7 @@ TEST_CASE("raw line file: every mistake names the file, the line and what was ex
   check(line_header + "[measurement k]\nfile = nothere.csv\ncolumn = k\nunit = N/m\n", ":4: file = 'nothere.csv': expected an existing file");
   check(line_header + "[measurement k]\nfile = t.csv\ncolumn = k\nunit = um\n", ":6: unit = 'um': expected a unit of stiffness for k (N/m)");
   check(line_header + "[measurement k]\nfile = t.csv\nunit = N/m\n", ":3: [measurement k] has no 'column'");
-  check(line_header + k_section + "families = lognormal, cauchy\n", ":7: families = 'cauchy': expected lognormal, normal, gamma or weibull");
+  check(line_header + k_section + "families = lognormal, cauchy\n", ":7: families = 'cauchy': expected lognormal, normal, gamma, weibull or beta (for einf)");
   check(line_header + k_section + "\n[measurement k]\nfile = t.csv\ncolumn = k_N_per_m\nunit = N/m\n",
         ":8: section [measurement k] repeats the one on line 3");
   check(line_header + k_section + "\n[measurement  k]\nfile = t.csv\ncolumn = k_N_per_m\nunit = N/m\n",
@@ -198,13 +200,52 @@ TEST_CASE("raw line fit: impossible values are named by row, failed families are
 
 TEST_CASE("fit_variable_by_aic: a family that cannot fit is kept as a failure, the others compete") {
   // A value of 0 rules out the positive families; the normal law remains and is chosen.
-  const VariableFit fit = fit_variable_by_aic("einf", find_unit("frac", "test", "unit"), {0.0, 0.6, 0.7, 0.65, 0.62},
+  const VariableFit fit = fit_variable_by_aic("k", find_unit("N/m", "test", "unit"), {0.0, 0.6, 0.7, 0.65, 0.62},
                                               {std::begin(all_fit_families), std::end(all_fit_families)}, "test", "test");
   CHECK(fit.best().family == FitFamily::normal);
   for (const FamilyFit& candidate : fit.candidates) {
     CHECK(candidate.result.has_value() == (candidate.family == FitFamily::normal));
     if (!candidate.result) CHECK(candidate.failure.find("positive") != std::string::npos);
   }
+}
+
+TEST_CASE("fit_variable_by_aic on einf: the beta law is a candidate and no law that draws above 100 % can win") {
+  // 40 e_inf values in % from Beta(12, 2) (mean 86 %, sd 9 %), inverted at the midpoints of 40
+  // strata. Normal, lognormal, gamma and Weibull fits reach past 100 % in the upper tail a design
+  // draws (the normal's at 1 - 1.1e-16 is about 86 + 8.2 x 9 = 160 %): they fail, and beta wins.
+  const Beta truth(12.0, 2.0, 100.0);
+  std::vector<double> values;
+  for (int i = 0; i < 40; ++i) values.push_back(quantile(truth, (i + 0.5) / 40.0));
+  const Unit& percent = find_unit("%", "test", "unit");
+  const VariableFit fit = fit_variable_by_aic("einf", percent, values,
+                                              {std::begin(fraction_fit_families), std::end(fraction_fit_families)},
+                                              "test", "test");
+  REQUIRE(fit.best().family == FitFamily::beta);
+  CHECK(std::get<Beta>(fit.best().distribution).upper() == 100.0);
+  for (const FamilyFit& candidate : fit.candidates) {
+    CAPTURE(to_string(candidate.family));
+    if (candidate.family == FitFamily::beta) continue;
+    CHECK(!candidate.result);
+    CHECK(candidate.failure.find("would draw fractions outside [0, 1]") != std::string::npos);
+  }
+  // Property: no value the chosen law gives a design, 10^5 strata and both extreme drawn
+  // probabilities included, is above 100 % or below 0.
+  const std::size_t n = 100000;
+  std::vector<double> u(n), x(n);
+  for (std::size_t i = 0; i < n; ++i) u[i] = (static_cast<double>(i) + 0.5) / static_cast<double>(n);
+  u.front() = lowest_drawn_probability;
+  u.back() = highest_drawn_probability;
+  quantiles(fit.best().distribution, u, x);
+  CHECK(*std::max_element(x.begin(), x.end()) <= 100.0);
+  CHECK(*std::min_element(x.begin(), x.end()) >= 0.0);
+  // The beta estimate is near the truth (40 values: alpha within a factor 2).
+  CHECK(std::get<Beta>(fit.best().distribution).alpha() == doctest::Approx(12.0).epsilon(0.5));
+
+  // The beta law is a law of fractions only.
+  const VariableFit stiffness_fit = fit_variable_by_aic("k", find_unit("N/m", "test", "unit"), stiffness,
+                                                        {FitFamily::beta, FitFamily::lognormal}, "test", "test");
+  CHECK(stiffness_fit.best().family == FitFamily::lognormal);
+  CHECK(stiffness_fit.candidates[0].failure == "the beta law is a law of fractions (einf); k is in N/m");
 }
 
 TEST_CASE("fit_variable_by_aic: a fitted law that would draw inf or 0 is a failed family, not a fit") {
@@ -234,4 +275,18 @@ TEST_CASE("fit_variable_by_aic: a fitted law that would draw inf or 0 is a faile
   const VariableFit fit = fit_variable_by_aic("k", find_unit("N/m", "test", "unit"), wide,
                                               {std::begin(all_fit_families), std::end(all_fit_families)}, "test", "test");
   CHECK(fit.candidates[fit.chosen].result.has_value());
+}
+
+TEST_CASE("raw line fit: a value more than a factor 1000 from its column's median is named as a likely typo") {
+  Folder folder;
+  // One stiffness typed 1e300 for 3.0: it gave a median turgor of 6e4 MPa without a word.
+  const std::string typo = fit_error_of(folder, "tube,k_N_per_m\nA,2.5\nB,1e300\nC,3.0\nD,2.8\n");
+  CHECK(typo.find("t.csv:3: k_N_per_m = '1e300': expected a value within a factor 1000 of the column's median 2.9 "
+                  "(a typo, or a value in another unit?)") != std::string::npos);
+  // Too small as well (a value in mN/m among N/m): median of 2.5, 3.0, 0.002, 2.8 is 2.65.
+  CHECK(fit_error_of(folder, "tube,k_N_per_m\nA,2.5\nB,3.0\nC,0.002\nD,2.8\n")
+            .find("t.csv:4: k_N_per_m = '0.002': expected a value within a factor 1000 of the column's median 2.65") !=
+        std::string::npos);
+  // A spread of a factor 100 is data, not a typo.
+  CHECK(fit_error_of(folder, "tube,k_N_per_m\nA,0.1\nB,3.0\nC,10\nD,2.8\n").find("within a factor") == std::string::npos);
 }

@@ -11,6 +11,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/distributions/fit.hpp"
 #include "growthuq/io/csv.hpp"
 #include "io/ini.hpp"
 #include "growthuq/relaxation/curves.hpp"
@@ -185,6 +186,13 @@ TEST_CASE("growthuq relax: fits simulated curves, writes fits and distribution e
   CHECK(section->find("source")->value == "fitted from curves.csv, 3 curves");
   REQUIRE(ini.find("einf") != nullptr);
   CHECK(ini.find("einf")->find("unit")->value == "frac");
+  // einf, a fraction, gets the bounded beta law: the beta ML fit of the einf column just written.
+  CHECK(ini.find("einf")->find("law")->value == "beta");
+  const FitResult einf = fit_distribution(FitFamily::beta, fits.numeric_column("einf_frac"));
+  CHECK(parse_double(ini.find("einf")->find("alpha")->value, "", "alpha") ==
+        doctest::Approx(std::get<Beta>(einf.distribution).alpha()).epsilon(1e-9));
+  CHECK(parse_double(ini.find("einf")->find("beta")->value, "", "beta") ==
+        doctest::Approx(std::get<Beta>(einf.distribution).beta()).epsilon(1e-9));
 
   // Results are never overwritten without --force.
   const Run again = relax(folder, "curves.csv --meta meta.csv --out fits.csv");
@@ -219,4 +227,19 @@ TEST_CASE("growthuq relax: bad options and files give one line and exit status 2
     CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
   }
   CHECK_FALSE(fs::exists(folder.file("d.ini")));
+}
+
+TEST_CASE("curves: a probe radius given for every curve and a different one in the sheet is an error, not overridden") {
+  Folder folder;
+  const auto curves = folder.write("c.csv", "curve,t_s,F_uN\n" + rows("a", 20) + rows("b", 20));
+  const auto meta = folder.write("m.csv", meta_header + "a,1.5,0.3,6.5,145,0.5\nb,1.5,0.3,6.5,145,0.25\n");
+  // The sheet alone decides, per curve.
+  CHECK(read_relaxation_curves(curves, meta, std::nullopt)[1].probe_radius_m == doctest::Approx(0.25e-6));
+  // --rho-um 0.5 given too: curve a agrees, curve b does not (the sheet silently won before).
+  CHECK(error_of(curves, meta, 0.5e-6) ==
+        meta + ":3: rho_um = '0.25': expected the probe radius given for every curve, 0.5 um (--rho-um, or the "
+               "campaign's probe_radius_um): give the radius in one place, or the same in both");
+  // The same radius in both places is no conflict.
+  const auto same = folder.write("s.csv", meta_header + "a,1.5,0.3,6.5,145,0.5\nb,1.5,0.3,6.5,145,0.5\n");
+  CHECK(read_relaxation_curves(curves, same, 0.5e-6)[1].probe_radius_m == doctest::Approx(0.5e-6));
 }

@@ -24,13 +24,26 @@ def same_values(a, b):
     return np.array_equal(a, b)
 
 
+def dimension_links(node, name):
+    """The dimension-scale bookkeeping HDF5 keeps as object references (addresses in the file):
+    DIMENSION_LIST of a dataset (its scales per axis), REFERENCE_LIST of a scale (the datasets
+    attached and their axes), as the paths they point to, which is what must agree."""
+    value = node.attrs[name]
+    if name == "DIMENSION_LIST":
+        return [[node.file[ref].name for ref in axis] for axis in value]
+    return sorted((node.file[row[0]].name, int(row[1])) for row in value)
+
+
 def compare(a, b, path, ignore):
     for name in sorted(set(a.attrs) | set(b.attrs)):
         if name in ignore:
             continue
         if name not in a.attrs or name not in b.attrs:
             return f"{path}: attribute {name} only in one file"
-        if not same_values(a.attrs[name], b.attrs[name]):
+        if name in ("DIMENSION_LIST", "REFERENCE_LIST"):
+            if dimension_links(a, name) != dimension_links(b, name):
+                return f"{path}: attribute {name} differs"
+        elif not same_values(a.attrs[name], b.attrs[name]):
             return f"{path}: attribute {name} differs"
     if isinstance(a, h5py.Dataset):
         return None if same_values(a[()], b[()]) else f"{path}: values differ"

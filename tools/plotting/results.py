@@ -92,13 +92,17 @@ def _required(node, key, where, expected):
 
 
 def _line_order(h5):
-    """Lines in campaign order: the order of the root summary table, then any other group."""
+    """Lines in campaign order: the root attribute line_order (in files written before it, the
+    order of the root summary table), then any other group."""
     groups = list(h5["lines"].keys())
-    order = []
-    if "summary" in h5 and h5["summary"].dtype.names and "line" in h5["summary"].dtype.names:
-        for name in text_list(h5["summary"]["line"]):
-            if name in groups and name not in order:
-                order.append(name)
+    if "line_order" in h5.attrs:
+        order = [name for name in text_list(h5.attrs["line_order"]) if name in groups]
+    else:
+        order = []
+        if "summary" in h5 and h5["summary"].dtype.names and "line" in h5["summary"].dtype.names:
+            for name in text_list(h5["summary"]["line"]):
+                if name in groups and name not in order:
+                    order.append(name)
     return order + [name for name in groups if name not in order]
 
 

@@ -25,6 +25,11 @@ inline constexpr double MPa = 1e6;
 inline constexpr double uN = 1e-6;  // force, micronewton (force curves, set points)
 inline constexpr double um_per_s = 1e-6;
 inline constexpr double nm_per_s = 1e-9;
+// Growth rates as labs time them: the decimal expansions of 1e-6 / 60 and 1e-6 / 3600, which
+// the compiler rounds once to the nearest double (1e-6 / 60.0 rounds twice, and only happens to
+// agree).
+inline constexpr double um_per_min = 1.6666666666666666666666666666666667e-8;
+inline constexpr double um_per_h = 2.7777777777777777777777777777777778e-10;
 inline constexpr double MPa_s = 1e6;
 inline constexpr double pct = 1e-2;
 // SI -> unit.
@@ -69,6 +74,7 @@ struct Unit {
 std::span<const Unit> known_units();
 
 // The unit spelled `symbol`; InputError naming location, key and the accepted symbols otherwise.
+// The micro sign (U+00B5) and the Greek mu (U+03BC), in UTF-8, are read as "u": "µm" is "um".
 const Unit& find_unit(std::string_view symbol, std::string_view location, std::string_view key);
 
 // A physical quantity the engine knows by name: its dimension, the unit it is written in by

@@ -12,6 +12,8 @@
 //   std::string describe(const Distribution&);             // "lognormal(mu=1.05, sigma=0.21)"
 #pragma once
 
+#include <utility>
+
 #include <span>
 #include <string>
 #include <string_view>
@@ -26,6 +28,7 @@ class TruncatedNormal;
 class Uniform;
 class Gamma;
 class Weibull;
+class Beta;
 class Empirical;
 
 }  // namespace growthuq
@@ -34,7 +37,7 @@ class Empirical;
 
 namespace growthuq {
 
-using Distribution = std::variant<Lognormal, Normal, TruncatedNormal, Uniform, Gamma, Weibull, Empirical>;
+using Distribution = std::variant<Lognormal, Normal, TruncatedNormal, Uniform, Gamma, Weibull, Beta, Empirical>;
 
 double pdf(const Distribution& distribution, double x);
 double cdf(const Distribution& distribution, double x);
@@ -42,5 +45,10 @@ double quantile(const Distribution& distribution, double u);
 void quantiles(const Distribution& distribution, std::span<const double> u, std::span<double> x);
 std::string_view family_name(const Distribution& distribution);
 std::string describe(const Distribution& distribution);
+
+// The parameters describe() prints, by name and unrounded, in its order: lognormal mu, sigma;
+// normal mean, sd; truncated_normal mean, sd, lower, upper; uniform lower, upper; gamma and
+// weibull shape, scale; beta alpha, beta, upper; empirical n, min, max. For files that keep fits as numbers (results.h5).
+std::vector<std::pair<std::string, double>> parameter_values(const Distribution& distribution);
 
 }  // namespace growthuq

@@ -3,6 +3,7 @@
 // is an InputError). The variant `Distribution` over them is in distribution.hpp.
 #pragma once
 
+#include "growthuq/distributions/beta.hpp"
 #include "growthuq/distributions/empirical.hpp"
 #include "growthuq/distributions/gamma.hpp"
 #include "growthuq/distributions/lognormal.hpp"

@@ -31,4 +31,11 @@ inline constexpr const char* sampled_range_expectation =
 //   "its quantile at probability 1 - 1.1e-16 is inf".
 std::optional<std::string> sampled_range_problem(const Distribution& law, double to_si = 1.0);
 
+// For a law of a fraction (e_inf) whose value 1 is `upper` in the law's unit (1 in frac, 100 in
+// %): why a design could draw a value outside [0, upper], or nullopt. A fraction above 1
+// (E_inf > E_r(0)) or below 0 is no tube's; such samples would be flagged and dropped, and the
+// rest would pass for the line's. The text names the end and the value, e.g.
+//   "its quantile at probability 1 - 1.1e-16 is 187, above 100 (a fraction of 1)".
+std::optional<std::string> fraction_range_problem(const Distribution& law, double upper);
+
 }  // namespace growthuq

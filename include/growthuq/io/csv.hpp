@@ -14,6 +14,7 @@ struct CsvTable {
   std::vector<std::string> header;
   std::vector<std::vector<std::string>> rows;  // cells, blanks trimmed
   std::vector<long> line_numbers;              // file line of each row (1-based)
+  char separator = ',';                        // ';' for a file with decimal commas (read_csv)
 
   // Index of column `name`, or InputError naming the file and the columns it has.
   std::size_t column_index(std::string_view name) const;
@@ -28,8 +29,15 @@ struct CsvTable {
 };
 
 // Reads `path`. Lines starting with '#' and blank lines are skipped (headers of synthetic
-// data say so in '#' lines). Cells may be double-quoted ("a,b"). InputError when the file
-// cannot be opened, has no header, repeats a column name or has a row of the wrong width.
+// data say so in '#' lines). Cells may be double-quoted ("a,b"). A UTF-8 byte-order mark is
+// skipped and CRLF line ends are read like LF (Excel's "CSV UTF-8").
+// The separator is the header's: a header with ';' and no ',' outside quotes makes a
+// semicolon-separated file with decimal commas (Excel's CSV where the decimal separator is a
+// comma), whose number cells are stored with a decimal point ("1,5" -> "1.5"), so rows read
+// alike whatever the dialect; a number there written with a point ("1.5") is an InputError, as
+// is a header with both separators.
+// InputError when the file cannot be opened, has no header, repeats a column name or has a row
+// of the wrong width.
 CsvTable read_csv(const std::string& path);
 
 // Builds CSV text row by row; numbers use format_double.

@@ -66,7 +66,8 @@ class Pool {
   // Runs `work` over [0, count) in chunks of `chunk_size`, handed out dynamically so that
   // slow chunks balance; `skip(range)` (optional) tells chunks already done (resume). Every
   // process must call run() with the same count, chunk_size and skip; `sink` is called only
-  // on rank 0. Returns when every chunk has been sunk; throws PoolError if a chunk failed.
+  // on rank 0. Returns when every chunk has been sunk; throws PoolError if a chunk failed (what
+  // the sink threw, on rank 0 the exception itself, elsewhere a PoolError).
   virtual void run(std::size_t count, std::size_t chunk_size, const ChunkWork& work,
                    const ChunkSink& sink,
                    const std::function<bool(ChunkRange)>& skip = nullptr) = 0;
@@ -102,7 +103,8 @@ class Pool {
     broadcast_bytes(std::as_writable_bytes(std::span(values.data(), size)), root);
   }
 
- protected:
+  // The stop request's value now (0: none); meaningful on the coordinator, whose request
+  // decides. Also for work after run() (a campaign's final writes).
   int stop_requested() const { return stop_request_ ? stop_request_() : 0; }
 
  private:
@@ -122,14 +124,16 @@ std::vector<std::vector<double>> run_items(Pool& pool, std::size_t count,
 // A pool of one process that runs chunks in order.
 std::unique_ptr<Pool> make_serial_pool();
 
-// True when this process was started by mpirun/mpiexec (Open MPI or PMIx environment).
+// True when this process was started in parallel: by mpirun, or as one of several tasks of srun
+// (growthuq/pool/launch.hpp reads the environment).
 bool launched_by_mpi();
 
 // The MPI pool over MPI_COMM_WORLD; initializes MPI on first use and finalizes it at exit.
 // Only call when launched_by_mpi().
 std::unique_ptr<Pool> make_mpi_pool();
 
-// The MPI pool when launched by mpirun, else the serial pool.
+// The MPI pool when launched in parallel, else the serial pool. Throws UnjoinableLaunch
+// (launch.hpp) when the process was started in parallel but cannot join the others.
 std::unique_ptr<Pool> make_pool();
 
 }  // namespace growthuq

@@ -8,7 +8,8 @@
 //   [measurement VARIABLE]      one per variable measured tube by tube (k, h, d, d0, v_exp; tau
 //                               and einf too when a lab has fitted its curves elsewhere):
 //                               file = CSV, column = header name, unit = unit of the values,
-//                               families = subset of lognormal, normal, gamma, weibull (optional)
+//                               families = subset of lognormal, normal, gamma, weibull, beta
+//                               (optional; beta only for einf, whose default list starts with it)
 //   [relaxation]                optional; gives tau and einf: curves = CSV (curve,t_s,F_uN),
 //                               meta = CSV (curve,delta_um,p_MPa,d_um,h_nm[,rho_um]; optional when
 //                               the curves file has those columns), terms = 1|2|3 (2),
@@ -29,7 +30,7 @@ struct RawMeasurement {
   std::string file;                 // resolved against the raw file's folder
   std::string column;               // header name in `file`
   const Unit* unit = nullptr;       // of the values, of the variable's dimension
-  std::vector<FitFamily> families;  // compared by AIC; all four unless restricted
+  std::vector<FitFamily> families;  // compared by AIC; the defaults (fit.hpp) unless restricted
   long line = 0;                    // of the section header, for messages
 };
 
@@ -39,7 +40,8 @@ struct RawRelaxation {
   std::string meta;                 // empty: metadata columns are in the curves file
   int terms = 2;                    // exponentials of the Prony series
   bool ramp_aware = false;          // fit = ramp_aware
-  std::vector<FitFamily> families;  // for the tau and einf laws
+  std::vector<FitFamily> families;       // for the tau law (and einf's when listed in the file)
+  std::vector<FitFamily> einf_families;  // the list given, or fraction_fit_families by default
   long line = 0;
 };
 

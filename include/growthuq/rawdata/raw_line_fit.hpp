@@ -55,6 +55,9 @@ struct VariableFit {
 };
 
 // Fits `values` with every family and keeps the one of least AIC (ties: the earlier family).
+// A family fails (kept with its reason) when its law cannot be sampled (sampled_range.hpp), and
+// for a fraction (a unit of Dimension::fraction: einf) also when its law would draw a value
+// outside [0, 1] (fraction_range_problem); the beta law fails for any other variable.
 // InputError at `location` naming the variable and every family's failure when none fits.
 VariableFit fit_variable_by_aic(std::string variable, const Unit& unit, std::vector<double> values,
                                 std::vector<FitFamily> families, std::string source, std::string_view location);

@@ -28,7 +28,8 @@ inline constexpr std::size_t minimum_curve_samples = 20;
 
 // Reads and validates the curves, in order of first appearance. `meta_path` empty: metadata
 // columns are read from the force file and must be constant within a curve. `probe_radius_m`
-// is used when no rho_um column exists. InputError naming file and line for: a missing
+// is used when no rho_um column exists; with one, a row whose rho_um differs from it is an
+// error (never silently overridden). InputError naming file and line for: a missing
 // column, a non-numeric cell, time not increasing within a curve, a negative force, fewer than
 // minimum_curve_samples samples, a curve without metadata (or metadata without a curve, or
 // twice), a metadata value that is not positive, no probe radius at all.

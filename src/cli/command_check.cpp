@@ -1,0 +1,105 @@
+// growthuq check: everything `growthuq run` validates before it samples (the campaign file and
+// the flags, every line, matrix and raw-data file, the raw-data fits, the models each line
+// needs, the output directory, the memory and disk the run will take on this machine), then
+// the plan on stdout. Nothing is sampled and nothing is written.
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include "campaign/campaign_outputs.hpp"
+#include "campaign/run_footprint.hpp"
+#include "campaign_flags.hpp"
+#include "commands.hpp"
+#include "growthuq/campaign/campaign_run.hpp"
+#include "growthuq/core/error.hpp"
+#include "options.hpp"
+
+namespace growthuq::cli {
+namespace {
+
+constexpr std::string_view location = "growthuq check";
+constexpr std::string_view usage = "CAMPAIGN.ini [--samples N] [--seed S] [--out DIR] [--lines a,b] [--formats F] [--force]";
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+std::string_view correlation_text(const PreparedLine& line) {
+  switch (line.campaign_line.correlation) {
+    case CorrelationSource::none: return "independent";
+    case CorrelationSource::file: return "rank correlation from a matrix file";
+    case CorrelationSource::physics: return "rank correlation from the forward thin-shell model";
+  }
+  return "";
+}
+
+void print_plan(const PreparedCampaign& prepared, const RunFootprint& footprint, const MachineRoom& room) {
+  const Campaign& c = prepared.campaign();
+  std::cout << "campaign '" << c.name << "' (" << c.path << "): " << prepared.lines().size()
+            << (prepared.lines().size() == 1 ? " line" : " lines") << " x " << c.samples << " samples, seed " << c.seed
+            << ", fidelity thin_shell\n"
+            << "outputs: " << joined(c.outputs) << "\n\nlines, in run order:\n";
+  for (const PreparedLine& line : prepared.lines()) {
+    const CampaignLine& source = line.campaign_line;
+    std::vector<std::string> variables, models;
+    for (const LineVariable& variable : line.design_variables.variables) {
+      variables.push_back(variable.name + " [" + std::string(variable.unit->symbol) + "]");
+    }
+    for (const Evaluator* model : line.plan) models.emplace_back(model->name());
+    std::cout << "  " << source.name << ": "
+              << (source.raw_path.empty() ? "distributions " + source.distributions_path : "fitted from raw data " + source.raw_path)
+              << "\n    samples " << (variables.empty() ? std::string("nothing") : joined(variables)) << "; "
+              << correlation_text(line) << "\n    models " << (models.empty() ? std::string("none") : joined(models)) << "\n";
+  }
+  std::cout << "\nresults in " << c.output_dir << ": summary.csv" << (c.formats.csv ? ", samples.csv" : "")
+            << (c.formats.hdf5 ? ", results.h5" : "") << "\n"
+            << "estimated peak memory " << readable_size(footprint.memory_bytes) << " for one process ("
+            << (room.memory_bytes ? readable_size(*room.memory_bytes) + " available" : std::string("available memory unknown"))
+            << "), disk " << readable_size(footprint.disk_bytes) << " ("
+            << (room.disk_bytes ? readable_size(*room.disk_bytes) + " free there" : std::string("free space unknown")) << ")\n"
+            << "time: not estimated (growthuq tradeoff " << c.path << " measures it for sample counts you choose)\n"
+            << "checked: nothing was sampled or written\n";
+}
+
+}  // namespace
+
+int run_check(const Arguments& arguments) {
+  std::string campaign_path;
+  CampaignFlags flags;
+  bool force = false;
+  po::options_description described("options");
+  described.add_options()("campaign", po::value(&campaign_path)->required(),
+                          "campaign file (INI; relative paths in it start at its folder)");
+  flags.declare(described);
+  described.add_options()("force", po::bool_switch(&force), "check as for run --force: an existing output directory is accepted");
+  po::positional_options_description positional;
+  positional.add("campaign", 1);
+  po::variables_map values;
+  if (!parse_arguments(arguments, "check", usage,
+                       "Checks a campaign as 'growthuq run' with the same options would before it samples: the\n"
+                       "campaign file, every line, matrix and raw-data file (raw data is fitted), the models each\n"
+                       "line needs, the output directory, and the memory and disk the run needs on this machine.\n"
+                       "Prints the plan: lines in run order with the variables they sample and their models,\n"
+                       "the outputs, the result files and the estimated memory and disk. Samples nothing and\n"
+                       "writes nothing; exits 0 when the run would start, 2 with the run's message otherwise.",
+                       described, positional, values)) {
+    return 0;
+  }
+  Campaign campaign = read_campaign(campaign_path);
+  const CampaignOverrides overrides = flags.overrides(values, location);
+  apply_overrides(campaign, overrides);
+  const PreparedCampaign prepared(std::move(campaign));
+  check_output_directory(prepared.campaign(), force ? Overwrite::allow : Overwrite::refuse);
+  const RunFootprint footprint = estimate_run_footprint(run_shape(prepared, true));
+  const MachineRoom room = machine_room(1, prepared.campaign().output_dir);
+  // Named where the count was given, as the run names it.
+  const bool from_flag = values.count("samples") != 0;
+  require_room(footprint, room, from_flag ? std::string(location) : campaign_path,
+               from_flag ? "--samples" : "[campaign] samples");
+  print_plan(prepared, footprint, room);
+  return 0;
+}
+
+}  // namespace growthuq::cli

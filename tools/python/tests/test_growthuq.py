@@ -1,0 +1,271 @@
+"""The growthuq package end to end: a small campaign (a raw-data line and a line file, in an order
+that is not alphabetical, einf in % in one and as a fraction in the other) run through the CLI,
+its results loaded and checked against samples.csv and summary.csv, against xarray and h5py
+reading results.h5 directly, and against pandas' own Spearman correlation; the CLI's errors
+as Python exceptions; eval_tubes against the CLI's single-tube path.
+
+Run by CTest (tests/python/CMakeLists.txt) with GROWTHUQ_CLI set to the CLI just built:
+    GROWTHUQ_CLI=build/release/growthuq PYTHONPATH=tools/python /usr/bin/python3 -m unittest discover -s tools/python/tests
+"""
+import os
+import re
+import subprocess
+import tempfile
+import unittest
+from pathlib import Path
+
+import h5py
+import numpy as np
+import pandas as pd
+import xarray as xr
+
+import growthuq
+
+REPOSITORY = Path(__file__).resolve().parents[3]
+SAMPLES = 40
+
+CAMPAIGN = """[campaign]
+name = python_package
+seed = 7
+samples = 300
+outputs = p, E, eta, v, v_exp
+output_dir = results/default
+formats = csv, hdf5
+
+[instrument]
+probe_radius_um = 0.5
+poisson_ratio = 0.2
+
+[growth]
+yield_pressure_MPa = 0
+reference_line = wild_type
+
+[physics_correlation]
+p_MPa = 0.1:0.8
+E_MPa = 5:200
+h_nm = 100:300
+d0_um = 4:8
+samples = 2000
+
+# einf of the fitted line is a fraction (einf_frac), of wild_type.ini in % (einf_pct).
+[line xxt1_xxt2]
+raw = {repository}/distributions/example_raw/xxt1_xxt2/raw.ini
+
+[line wild_type]
+distributions = {repository}/distributions/wild_type.ini
+rank_correlation = physics
+"""
+
+
+def in_campaign_order(csv, lines):
+    """The rows of a CSV result reordered as the campaign lists its lines (the run, and so the
+    CSV, begins with the reference line)."""
+    rank = csv["line"].map({line: i for i, line in enumerate(lines)})
+    return csv.iloc[rank.argsort(kind="stable")].reset_index(drop=True)
+
+
+def numbers(series):
+    return pd.to_numeric(series, errors="coerce").to_numpy(dtype=float)
+
+
+class RunAndLoad(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.scratch = tempfile.TemporaryDirectory(prefix="growthuq-python-")
+        cls.work = Path(cls.scratch.name)
+        cls.campaign = cls.work / "campaign.ini"
+        cls.campaign.write_text(CAMPAIGN.format(repository=REPOSITORY))
+        cls.results = growthuq.run(cls.campaign, cwd=cls.work, samples=SAMPLES, out="out")
+        cls.out = cls.work / "out"
+        csv = {name: pd.read_csv(cls.out / f"{name}.csv", keep_default_na=False, na_values=[""],
+                                 float_precision="round_trip") for name in ("samples", "summary")}
+        cls.run_order = list(dict.fromkeys(csv["summary"]["line"]))
+        cls.samples_csv = in_campaign_order(csv["samples"], ["xxt1_xxt2", "wild_type"])
+        cls.summary_csv = in_campaign_order(csv["summary"], ["xxt1_xxt2", "wild_type"])
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.scratch.cleanup()
+
+    def test_lines_in_campaign_order(self):
+        self.assertEqual(self.run_order, ["wild_type", "xxt1_xxt2"])  # the reference line runs first
+        self.assertEqual(self.results.lines, ["xxt1_xxt2", "wild_type"])
+        self.assertEqual(list(dict.fromkeys(self.results.summary["line"])), ["xxt1_xxt2", "wild_type"])
+        self.assertEqual(list(self.results.samples["line"].cat.categories), ["xxt1_xxt2", "wild_type"])
+        self.assertEqual(list(self.results.dataset["line"].values), ["xxt1_xxt2", "wild_type"])
+        with h5py.File(self.out / "results.h5") as f:
+            self.assertEqual(list(f["lines"]), ["xxt1_xxt2", "wild_type"])  # the groups list in it too
+
+    def test_samples_are_those_of_samples_csv_with_one_einf_column(self):
+        frame, csv = self.results.samples, self.samples_csv
+        self.assertEqual(len(frame), 2 * SAMPLES)
+        # samples.csv's columns, the two einf columns as one; line, sample, inputs, outputs, status.
+        self.assertEqual(set(frame.columns), set(csv.columns) - {"einf_pct"})
+        self.assertEqual(list(frame.columns[:2]), ["line", "sample"])
+        self.assertEqual(frame.columns[-1], "status")
+        roles = [self.results.dataset[c].attrs["role"] for c in frame.columns[2:-1]]
+        self.assertEqual(roles, sorted(roles))  # "input" < "output"
+        self.assertEqual(list(frame["line"].astype(str)), list(csv["line"]))
+        np.testing.assert_array_equal(frame["sample"], csv["sample"])
+        self.assertEqual(list(frame["status"]), list(csv["status"]))
+        # samples.csv keeps each line file's unit: two half-empty einf columns. The frame has one.
+        self.assertNotIn("einf_pct", frame.columns)
+        wild = (csv["line"] == "wild_type").to_numpy()
+        np.testing.assert_array_equal(frame["einf_frac"][~wild], csv["einf_frac"][~wild])
+        np.testing.assert_allclose(frame["einf_frac"][wild], csv["einf_pct"][wild] / 100, rtol=1e-15)
+        self.assertFalse(frame["einf_frac"].isna().any())
+        for column in ["k_N_per_m", "d_um", "d0_um", "h_nm", "tau_s", "v_exp_um_per_s", "p_MPa", "E_MPa",
+                       "eta_MPa_s", "v_um_per_s"]:
+            np.testing.assert_array_equal(frame[column].to_numpy(dtype=float), numbers(csv[column]), err_msg=column)
+        self.assertEqual(frame.attrs["units"]["p_MPa"], "MPa")
+        self.assertEqual(frame.attrs["units"]["einf_frac"], "frac")
+        self.assertEqual(frame.attrs["units"]["eta_MPa_s"], "MPa s")
+
+    def test_summary_is_summary_csv(self):
+        frame, csv = self.results.summary, self.summary_csv
+        self.assertEqual(list(frame.columns), list(csv.columns))
+        for column in csv.columns:
+            if csv[column].dtype == object:
+                self.assertEqual(list(frame[column].astype(str)), list(csv[column]), column)
+            else:
+                np.testing.assert_array_equal(frame[column].to_numpy(dtype=float), csv[column].to_numpy(dtype=float),
+                                              err_msg=column)
+        self.assertEqual(list(frame["line"].cat.categories), self.results.lines)
+
+    def test_dataset_has_named_dimensions_and_units(self):
+        dataset = self.results.dataset
+        self.assertEqual(dict(dataset.sizes), {"line": 2, "sample": SAMPLES})
+        self.assertEqual(dataset["p_MPa"].dims, ("line", "sample"))
+        self.assertEqual(dataset["p_MPa"].attrs["units"], "MPa")
+        self.assertEqual(dataset["p_MPa"].attrs["long_name"], "turgor pressure")
+        self.assertEqual(dataset["tau_s"].attrs["units"], "s")
+        self.assertEqual(dataset.attrs["seed"], 7)
+        # The mean of the ok samples is summary.csv's mean.
+        ok = dataset["status"] == "ok"
+        mean = float(dataset["E_MPa"].sel(line="wild_type").where(ok.sel(line="wild_type")).mean())
+        row = self.summary_csv[(self.summary_csv["line"] == "wild_type") & (self.summary_csv["quantity"] == "E")]
+        self.assertAlmostEqual(mean, float(row["mean"].iloc[0]), delta=1e-12 * abs(mean))
+
+    def test_xarray_and_h5py_open_the_file_directly(self):
+        path = self.out / "results.h5"
+        line = xr.open_dataset(path, group="lines/wild_type", engine="h5netcdf")
+        self.assertEqual(line["p_MPa"].dims, ("sample",))
+        np.testing.assert_array_equal(line["p_MPa"].values, self.results.dataset["p_MPa"].sel(line="wild_type").values)
+        analysis = xr.open_dataset(path, group="lines/wild_type/analysis", engine="h5netcdf")
+        self.assertEqual(analysis["loadings"].dims, ("variable", "component"))
+        self.assertIn("einf_frac", list(analysis["variable"].values))
+        points = xr.open_dataset(path, group="lines/xxt1_xxt2/relaxation/points", engine="h5netcdf")
+        self.assertEqual(points["F_uN"].dims, ("point",))
+        self.assertEqual(points["F_uN"].attrs["units"], "uN")
+        self.assertEqual(points["t_s"].attrs["units"], "s")
+        with h5py.File(path) as f:
+            self.assertIsInstance(f["lines/wild_type/p_MPa"].attrs["units"], str)
+            self.assertIsInstance(f.attrs["campaign_text"], str)
+            self.assertEqual(list(f.attrs["line_order"]), ["xxt1_xxt2", "wild_type"])
+
+    def test_correlations_match_pandas_spearman(self):
+        correlations = self.results.correlations
+        frame = self.results.samples
+        ok = frame[(frame["line"] == "wild_type") & (frame["status"] == "ok")]
+        expected = ok["k_N_per_m"].corr(ok["p_MPa"], method="spearman")
+        row = correlations[(correlations["line"] == "wild_type") & (correlations["matrix"] == "input_output")
+                           & (correlations["row"] == "k_N_per_m") & (correlations["column"] == "p_MPa")]
+        self.assertEqual(len(row), 1)
+        self.assertAlmostEqual(float(row["spearman"].iloc[0]), expected, delta=1e-12)
+        achieved = correlations[(correlations["matrix"] == "achieved") & (correlations["row"] == correlations["column"])]
+        np.testing.assert_allclose(achieved["spearman"], 1.0, rtol=0, atol=1e-12)
+        self.assertEqual(set(correlations[correlations["matrix"] == "target"]["line"]), {"wild_type"})
+
+    def test_fits_as_numbers(self):
+        fits, parameters = self.results.fits, self.results.fit_parameters
+        self.assertEqual(set(fits["line"]), {"xxt1_xxt2"})
+        self.assertIn("k", list(fits["variable"]))
+        chosen = parameters[(parameters["chosen"] == 1)]
+        for _, fit in fits.iterrows():
+            mine = chosen[chosen["variable"] == fit["variable"]]
+            self.assertTrue((mine["family"] == fit["family"]).all())
+            printed = ", ".join("%s=%.6g" % (p, v) for p, v in zip(mine["parameter"], mine["value"]))
+            self.assertTrue(fit["parameters"].startswith(printed), (printed, fit["parameters"]))
+        self.assertEqual(parameters["value"].dtype, np.float64)
+
+    def test_the_readme_figure(self):
+        """The Python example of the top-level README, run as written on these results."""
+        readme = (REPOSITORY / "README.md").read_text()
+        code = readme.split("<!-- python-figure", 1)[1].split("```python\n", 1)[1].split("```", 1)[0]
+        self.assertIn('growthuq.load("results/quick")', code)
+        code = code.replace('"results/quick"', repr(str(self.out)))
+        here = os.getcwd()
+        os.chdir(self.work)
+        try:
+            namespace = {}
+            exec(compile(code, "README.md", "exec"), namespace)  # noqa: S102 - the README's own example
+        finally:
+            os.chdir(here)
+        self.assertEqual((self.work / "turgor.png").read_bytes()[:8], b"\x89PNG\r\n\x1a\n")
+        axes = namespace["ax"]
+        self.assertEqual([label.get_text() for label in axes.get_xticklabels()], self.results.lines)
+        self.assertEqual(axes.get_ylabel(), "turgor p [MPa]")
+
+    def test_run_without_out_loads_the_campaigns_output_directory(self):
+        results = growthuq.run(self.campaign, cwd=self.work, samples=5, lines=["wild_type"])
+        self.assertEqual(results.path, self.work / "results" / "default" / "results.h5")
+        self.assertEqual(results.lines, ["wild_type"])
+        self.assertIn("campaign 'python_package'", results.report)
+
+    def test_cli_errors_arrive_as_exceptions_with_its_message(self):
+        with self.assertRaises(growthuq.CliError) as caught:
+            growthuq.run(self.campaign, cwd=self.work, samples=0, out="never")
+        self.assertIn("--samples = '0': expected a whole number", str(caught.exception))
+        self.assertNotEqual(caught.exception.returncode, 0)
+        self.assertFalse((self.work / "never").exists())
+        with self.assertRaises(growthuq.CliError) as caught:
+            growthuq.run(self.campaign, cwd=self.work, samples=5, out="out")  # exists: no silent overwrite
+        self.assertIn("--force", str(caught.exception))
+
+
+class EvalTubes(unittest.TestCase):
+    def test_frame_of_tubes_as_the_single_tube_path_gives(self):
+        tubes = pd.DataFrame({"k_N_per_m": [2.87, 3.0], "d_um": [5.6, 9.0], "d0_um": [5.35, 3.0], "h_nm": [200, 200]},
+                             index=["tube A", "tube B"])
+        results = growthuq.eval_tubes(tubes, rho_um=0.5)
+        self.assertEqual(list(results.index), ["tube A", "tube B"])
+        self.assertEqual(list(results["status"]), ["ok", "beyond_membrane_limit"])
+        self.assertTrue(np.isnan(results.loc["tube B", "p_MPa"]))
+        single = subprocess.run([growthuq.find_cli(), "eval", "--k", "2.87", "--d-um", "5.6", "--d0-um", "5.35",
+                                 "--h-nm", "200", "--rho-um", "0.5"], capture_output=True, text=True, check=True).stdout
+        for quantity, column in [("p", "p_MPa"), ("E", "E_MPa"), ("alpha", "alpha_um")]:
+            value = float(re.search(r"^\s+%s\s+(\S+)" % quantity, single, re.MULTILINE).group(1))
+            self.assertEqual(results.loc["tube A", column], value, column)
+        with_nu = growthuq.eval_tubes(tubes.iloc[:1], rho_um=0.5, nu=0.3)
+        self.assertNotEqual(with_nu["p_MPa"].iloc[0], results["p_MPa"].iloc[0])  # the option reached the CLI
+
+    def test_bad_tubes_raise_the_cli_message(self):
+        with self.assertRaises(growthuq.CliError) as caught:
+            growthuq.eval_tubes(pd.DataFrame({"k_N_per_m": [2.87], "d_um": [5.6]}), rho_um=0.5)
+        self.assertIn("d0", str(caught.exception))
+        self.assertIn("growthuq eval: error:", str(caught.exception))
+
+
+class FindCli(unittest.TestCase):
+    def test_argument_then_environment(self):
+        self.assertEqual(growthuq.find_cli(os.environ["GROWTHUQ_CLI"]), os.environ["GROWTHUQ_CLI"])
+        saved = os.environ["GROWTHUQ_CLI"]
+        try:
+            os.environ["GROWTHUQ_CLI"] = "/nonexistent/growthuq"
+            with self.assertRaises(FileNotFoundError) as caught:
+                growthuq.find_cli()
+            self.assertIn("/nonexistent/growthuq: not an executable file", str(caught.exception))
+            self.assertIn("GROWTHUQ_CLI", str(caught.exception))
+            self.assertEqual(growthuq.find_cli(saved), saved)  # the argument comes first
+        finally:
+            os.environ["GROWTHUQ_CLI"] = saved
+
+    def test_load_names_the_missing_file(self):
+        with tempfile.TemporaryDirectory() as empty:
+            with self.assertRaises(growthuq.ResultsError) as caught:
+                growthuq.load(empty)
+        self.assertIn("results.h5: no such file", str(caught.exception))
+
+
+if __name__ == "__main__":
+    unittest.main()
