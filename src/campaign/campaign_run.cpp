@@ -200,14 +200,6 @@ std::vector<double> PreparedCampaign::evaluate_chunk(const PreparedLine& line, c
   return ChunkValues::pack(block, computed_outputs_);
 }
 
-StatusSet PreparedCampaign::valued_statuses(const PreparedLine& line, std::string_view output) const {
-  for (const Evaluator* model : line.plan) {
-    const std::vector<std::string> writes = model->writes();
-    if (std::find(writes.begin(), writes.end(), output) != writes.end()) return model->valued_statuses(output);
-  }
-  return {};
-}
-
 void on_coordinator(Pool& pool, const std::function<void()>& action) {
   CoordinatorFailure failure;
   failure.run(pool, action);
@@ -221,17 +213,16 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // A line's LineResult without values: its name and columns (inputs in their line-file unit,
-// then outputs in their default unit, with the statuses their models declare them valued under).
+// then outputs in their default unit).
 LineResult result_layout(const PreparedCampaign& campaign, const PreparedLine& line) {
   LineResult result;
   result.name = line.campaign_line.name;
   for (const LineVariable& variable : line.design_variables.variables) {
-    result.columns.push_back(ResultColumn{variable.name, variable.unit, true, {}, {}});
+    result.columns.push_back(ResultColumn{variable.name, variable.unit, true, {}});
   }
   for (const std::string& output : campaign.computed_outputs()) {
     const Quantity* quantity = find_quantity(output);
-    result.columns.push_back(ResultColumn{output, &find_unit(quantity->default_unit, "quantity table", output), false, {},
-                                          campaign.valued_statuses(line, output)});
+    result.columns.push_back(ResultColumn{output, &find_unit(quantity->default_unit, "quantity table", output), false, {}});
   }
   return result;
 }
@@ -374,7 +365,7 @@ class LineRun {
       const bool by_strata = c < design->ranks.size() && design->strictly_increasing[c] != 0;
       ColumnStatistics column = column_statistics(
           layout.columns[c], values[c], by_strata ? std::span<const std::uint32_t>(design->ranks[c]) : std::span<const std::uint32_t>{},
-          evaluated->status, *used, contains(campaign_.campaign().outputs, layout.columns[c].quantity));
+          *used, contains(campaign_.campaign().outputs, layout.columns[c].quantity));
       if (pool_.is_coordinator()) {
         (*statistics)[c] = std::move(column);
       } else {
@@ -474,7 +465,7 @@ LineStatistics line_statistics(const LineResult& result, const std::vector<std::
   LineStatistics statistics;
   for (const std::string& output : outputs) {
     for (const ResultColumn& column : result.columns) {
-      if (column.quantity == output) statistics.summaries.push_back(summarize_quantity(result.name, column, result.status));
+      if (column.quantity == output) statistics.summaries.push_back(summarize_quantity(result.name, column));
     }
   }
   statistics.analysis = analyze_line(result);

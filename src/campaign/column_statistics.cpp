@@ -52,13 +52,14 @@ ColumnStatistics ColumnStatistics::decode(std::span<const double> message) {
 }
 
 ColumnStatistics column_statistics(const ResultColumn& column, std::span<const double> values,
-                                   std::span<const std::uint32_t> strata, std::span<const SampleStatus> status,
-                                   std::span<const std::uint32_t> used, bool summarize) {
-  // Samples the summary counts beyond the analysis's (v = 0 of a no_growth sample).
-  const bool counts_more = !column.valued_statuses.empty() &&
-                           std::any_of(status.begin(), status.end(), [&](SampleStatus s) {
-                             return s != SampleStatus::ok && column.valued_statuses.contains(s);
-                           });
+                                   std::span<const std::uint32_t> strata, std::span<const std::uint32_t> used,
+                                   bool summarize) {
+  // The summary counts the samples holding a value (holds_value); the analysis the ok ones,
+  // whose values an output always holds. They differ when a sample holds a value without being
+  // ok: an input of a flagged sample, p and E of a sample a later model flagged, v = 0 of a
+  // no_growth sample.
+  const auto holding = static_cast<std::size_t>(std::count_if(values.begin(), values.end(), holds_value));
+  const bool counts_more = holding != used.size();
   ColumnStatistics statistics;
   const bool analyzed = used.size() >= 3;  // analyze_line's minimum
   std::vector<std::size_t> positions;
@@ -69,8 +70,8 @@ ColumnStatistics column_statistics(const ResultColumn& column, std::span<const d
     statistics.summary = summary_from_order("", column, values.size() - used.size(), statistics.analysis.moments,
                                             statistics.analysis.order_statistics);
   } else {
-    ResultColumn copy{column.quantity, column.unit, column.is_input, {values.begin(), values.end()}, column.valued_statuses};
-    statistics.summary = summarize_quantity("", copy, status);
+    ResultColumn copy{column.quantity, column.unit, column.is_input, {values.begin(), values.end()}};
+    statistics.summary = summarize_quantity("", copy);
   }
   return statistics;
 }

@@ -31,14 +31,15 @@ struct ColumnStatistics {
 };
 
 // The statistics of `column` (whose whole column of values is `values`): the analysis over the
-// samples `used` (analysis_samples; none when fewer than 3, analyze_line's minimum) and, when
-// `summarize`, its summary. One sort serves both when the summary counts the same samples (no
-// sample counted under one of the column's valued statuses, every ok value finite); otherwise
-// summarize_quantity selects its own order statistics. `strata`: the design's ranks when the
-// column's values strictly increase with them (analyze_column), else empty.
+// samples `used` (analysis_samples: the ok ones; none when fewer than 3, analyze_line's minimum)
+// and, when `summarize`, its summary over the samples holding a value (holds_value). One sort
+// serves both when they are the same samples (no sample holds a value without being ok, every ok
+// value finite); otherwise summarize_quantity selects its own order statistics. `strata`: the
+// design's ranks when the column's values strictly increase with them (analyze_column), else
+// empty.
 ColumnStatistics column_statistics(const ResultColumn& column, std::span<const double> values,
-                                   std::span<const std::uint32_t> strata, std::span<const SampleStatus> status,
-                                   std::span<const std::uint32_t> used, bool summarize);
+                                   std::span<const std::uint32_t> strata, std::span<const std::uint32_t> used,
+                                   bool summarize);
 
 // The columns one process computed, as it sends them to the coordinator:
 //   for each column: [column index, message size, ColumnStatistics message].

@@ -103,14 +103,13 @@ ReplicateLine evaluate_replicate_line(const PreparedCampaign& campaign, const Pr
   for (const ReplicateOutput& output : replicate_outputs(campaign, line)) {
     const Unit& unit = output_unit(line, output);
     if (output.input) {
-      result.outputs.push_back(ResultColumn{output.quantity, &unit, true, design.values[*output.input], {}});
+      result.outputs.push_back(ResultColumn{output.quantity, &unit, true, design.values[*output.input]});
       continue;
     }
     const std::span<const double> si = chunk.output(*output.computed);
     LargeVector<double> column(si.begin(), si.end());
     for (double& value : column) value /= unit.to_si;
-    result.outputs.push_back(
-        ResultColumn{output.quantity, &unit, false, std::move(column), campaign.valued_statuses(line, output.quantity)});
+    result.outputs.push_back(ResultColumn{output.quantity, &unit, false, std::move(column)});
   }
   return result;
 }
@@ -149,7 +148,7 @@ std::vector<std::vector<QuantitySummary>> replicate_summaries(const PreparedCamp
     }
     std::vector<QuantitySummary> line_summaries;
     for (const ResultColumn& column : result.outputs) {
-      line_summaries.push_back(summarize_quantity(original.campaign_line.name, column, result.status));
+      line_summaries.push_back(summarize_quantity(original.campaign_line.name, column));
     }
     summaries.push_back(std::move(line_summaries));
   }

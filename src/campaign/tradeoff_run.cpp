@@ -30,7 +30,7 @@ class SummaryObserver final : public RunObserver {
     }
     for (const std::string& output : campaign_.campaign().outputs) {
       for (const ResultColumn& column : result.columns) {
-        if (column.quantity == output) summaries_.push_back(summarize_quantity(result.name, column, result.status));
+        if (column.quantity == output) summaries_.push_back(summarize_quantity(result.name, column));
       }
     }
   }

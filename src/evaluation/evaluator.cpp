@@ -114,6 +114,22 @@ class DeclarationCheck {
                                             " for sample " + std::to_string(i) + ", whose status is ok");
         }
       }
+      // A value where the sample is flagged reads as computed (samples.csv, summaries): only
+      // a flag this evaluator raised under one of the column's valued statuses may keep one.
+      const StatusSet valued = evaluator.valued_statuses(quantity);
+      const auto stray = [&](std::size_t i) {
+        return status[i] != SampleStatus::ok && std::isfinite(values[i]) &&
+               !(status_[i] == SampleStatus::ok && valued.contains(status[i]));
+      };
+      bool any_stray = false;
+      for (std::size_t i = 0; i < block.size(); ++i) any_stray |= stray(i);
+      for (std::size_t i = 0; any_stray && i < block.size(); ++i) {
+        if (stray(i)) {
+          broken_declaration(evaluator, "the declared column '" + quantity + "' holds " + std::to_string(values[i]) +
+                                            " for sample " + std::to_string(i) + ", flagged " +
+                                            std::string(to_string(status[i])) + " (expected NaN: not computed)");
+        }
+      }
     }
     std::vector<std::pair<std::string, std::uint64_t>> columns;
     for (std::string& quantity : block.quantities()) {

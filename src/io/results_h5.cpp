@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <numeric>
 #include <span>
 #include <stdexcept>
@@ -90,6 +91,21 @@ H5::DataSet write_vector(H5::Group& group, const std::string& name, const H5::Pr
   const hsize_t size = values.size();
   H5::DataSet dataset = group.createDataSet(name, file_type, H5::DataSpace(1, &size), untimed_dataset());
   if (!values.empty()) dataset.write(values.data(), memory_type);
+  return dataset;
+}
+
+// A column of a line's samples: NaN where the sample lacks the quantity (its model did not
+// compute it), declared as the netCDF/CF missing value, both as the dataset's fill value and as
+// the `_FillValue` attribute (as netCDF-4 and h5netcdf write it), so xarray, and CF tools that
+// do not treat NaN as missing by themselves, read those cells as missing.
+H5::DataSet write_sample_column(H5::Group& group, const std::string& name, std::span<const double> values) {
+  const double missing = std::numeric_limits<double>::quiet_NaN();
+  H5::DSetCreatPropList properties = untimed_dataset();
+  properties.setFillValue(H5::PredType::NATIVE_DOUBLE, &missing);
+  const hsize_t size = values.size();
+  H5::DataSet dataset = group.createDataSet(name, H5::PredType::IEEE_F64LE, H5::DataSpace(1, &size), properties);
+  if (!values.empty()) dataset.write(values.data(), H5::PredType::NATIVE_DOUBLE);
+  write_f64_attribute(dataset, "_FillValue", missing);
   return dataset;
 }
 
@@ -370,7 +386,7 @@ void ResultsH5Writer::write_line(const LineResult& result, const std::vector<Qua
       const StoredColumn& as_stored = stored.back();
       const std::span<const double> values =
           as_stored.converted.empty() ? std::span<const double>(column.values) : std::span<const double>(as_stored.converted);
-      H5::DataSet dataset = write_vector(group, as_stored.name, H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, values);
+      H5::DataSet dataset = write_sample_column(group, as_stored.name, values);
       attach_dimension(dataset, sample, 0);
       write_string_attribute(dataset, "quantity", column.quantity);
       write_string_attribute(dataset, "unit", std::string(as_stored.unit->symbol));

@@ -57,10 +57,6 @@ MedianConfidenceRanks median_confidence_ranks(std::size_t n, double level) {
   return ranks;
 }
 
-bool counts_in_summary(const ResultColumn& column, SampleStatus status) {
-  return has_value(status, column.valued_statuses);
-}
-
 std::vector<std::size_t> summary_positions(std::size_t n) {
   std::vector<std::size_t> positions;
   if (n == 0) return positions;
@@ -156,18 +152,11 @@ void require_finite_statistics(const QuantitySummary& summary, std::string_view 
   }
 }
 
-QuantitySummary summarize_quantity(const std::string& line, const ResultColumn& column,
-                                   std::span<const SampleStatus> status) {
-  if (status.size() != column.values.size()) {
-    throw std::invalid_argument("summarize_quantity: column '" + column.quantity + "' has " +
-                                std::to_string(column.values.size()) + " values but " +
-                                std::to_string(status.size()) + " statuses");
-  }
+QuantitySummary summarize_quantity(const std::string& line, const ResultColumn& column) {
   std::vector<double> values;
   values.reserve(column.values.size());
-  for (std::size_t i = 0; i < column.values.size(); ++i) {
-    const double value = column.values[i];
-    if (counts_in_summary(column, status[i]) && std::isfinite(value)) values.push_back(value);
+  for (const double value : column.values) {
+    if (holds_value(value)) values.push_back(value);
   }
   const SampleMoments moments = sample_moments(values);
   // Only a few order statistics are needed: select them (std::nth_element, linear time) in

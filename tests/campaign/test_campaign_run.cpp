@@ -82,7 +82,8 @@ TEST_CASE("a small campaign end to end: files, columns, summaries from samples.c
   CHECK(samples.rows.back()[0] == "pme48");
   CHECK(samples.rows[199][1] == "199");
 
-  // Per line and quantity: the values that count (status ok; for v also no_growth).
+  // Per line and quantity: the values that count, those computed: every output of an ok sample,
+  // and of a no_growth sample p, E and eta (computed before the growth model flagged it) and v = 0.
   const std::vector<std::string> quantities{"p", "E", "eta", "v"};
   std::map<std::string, std::map<std::string, std::vector<double>>> counted;
   std::map<std::string, std::size_t> flagged_v;
@@ -105,7 +106,9 @@ TEST_CASE("a small campaign end to end: files, columns, summaries from samples.c
     } else if (status == "no_growth") {
       CHECK(row[11] == "0");
       CHECK(cell(8) <= 0.15);
+      CHECK(relative_difference(cell(10), cell(6) * (1 - cell(7) / 100) * cell(9)) < 1e-13);
       counted[line]["v"].push_back(0.0);
+      for (std::size_t q = 0; q < 3; ++q) counted[line][quantities[q]].push_back(cell(8 + q));
       ++no_growth[line];
     } else {
       CHECK(row[11].empty());
@@ -286,7 +289,7 @@ TEST_CASE("the statistics the processes compute column by column equal those of 
   // run_campaign_lines shares the statistics out by column (inputs ranked by their design
   // strata, outputs sorted, summaries from the same sort); line_statistics computes them from
   // the assembled LineResult alone (summarize_quantity, analyze_line). The small campaign has
-  // no_growth samples (v = 0), so v's summary takes summarize_quantity's own path.
+  // no_growth samples (v = 0, p, E and eta computed), so their summaries take summarize_quantity's own path.
   Campaign campaign = read_campaign(data_dir + "/small_campaign.ini");
   campaign.samples = 3000;
   const PreparedCampaign prepared(std::move(campaign));

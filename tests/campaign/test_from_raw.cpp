@@ -59,7 +59,7 @@ class SummaryObserver final : public RunObserver {
   void line_done(const LineResult& result, const std::vector<std::string>&) override {
     for (const ResultColumn& column : result.columns) {
       for (const std::string& output : campaign_.outputs) {
-        if (column.quantity == output) medians[{result.name, output}] = summarize_quantity(result.name, column, result.status);
+        if (column.quantity == output) medians[{result.name, output}] = summarize_quantity(result.name, column);
       }
     }
   }

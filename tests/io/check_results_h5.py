@@ -46,8 +46,10 @@ with h5py.File(sys.argv[1], "r") as f:
     expect(v["median"] == np.median([0.028, 0.0, 0.041, 0.012, 0.02]), "v median")
     expect(v["unit"] == b"um/s", "v summary unit")
     expect(np.isnan(v["median_ci_low"]), "no 95 % interval for n = 5")
+    # p over every sample holding one: the no_growth sample's 0.22 too (computed before the flag).
     p = summary[summary["quantity"] == b"p"][0]
-    expect(p["n"] == 4 and np.isclose(p["q1"], np.quantile([0.31, 0.45, 0.18, 0.27], 0.25), rtol=1e-15), "p q1")
+    expect(p["n"] == 5 and p["n_flagged"] == 1, "p counts")
+    expect(np.isclose(p["q1"], np.quantile([0.31, 0.22, 0.45, 0.18, 0.27], 0.25), rtol=1e-15), "p q1")
 
     corr = wt["input_rank_correlation"]
     expect(list(corr.attrs["names"]) == ["k", "d0"], "correlation names")

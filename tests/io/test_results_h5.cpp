@@ -55,7 +55,6 @@ LineResult wild_type() {
                   column_of("einf", "%", true, {65, 70, 55, 80, 60, 72}),  // stored as einf_frac
                   column_of("p", "MPa", false, {0.31, missing, 0.22, 0.45, 0.18, 0.27}),
                   column_of("v", "um/s", false, {0.028, missing, 0.0, 0.041, 0.012, 0.02})};
-  line.columns.back().valued_statuses = {SampleStatus::no_growth};  // as the growth evaluator declares v
   line.status = {SampleStatus::ok, SampleStatus::burst, SampleStatus::no_growth,
                  SampleStatus::ok, SampleStatus::ok,    SampleStatus::ok};
   line.correlated_inputs = {"k", "d0"};
@@ -78,7 +77,7 @@ LineResult xxt1_xxt2() {
 
 std::vector<QuantitySummary> summaries_of(const LineResult& line) {
   std::vector<QuantitySummary> summaries;
-  for (const ResultColumn& column : line.columns) summaries.push_back(summarize_quantity(line.name, column, line.status));
+  for (const ResultColumn& column : line.columns) summaries.push_back(summarize_quantity(line.name, column));
   return summaries;
 }
 

@@ -84,12 +84,9 @@ class Reference:
         return self.attrs[line, self.dataset(line, quantity)]["unit"]
 
     def counted(self, line, quantity):
-        """growthuq's summary rule: status ok, for v also no_growth; finite values."""
+        """growthuq's summary rule: the samples holding a value (NaN: the sample lacks it)."""
         values = self.columns[line, self.dataset(line, quantity)]
-        keep = self.status[line] == "ok"
-        if quantity == "v":
-            keep |= self.status[line] == "no_growth"
-        return values[keep & np.isfinite(values)]
+        return values[np.isfinite(values)]
 
 
 def percentiles(values):
@@ -222,8 +219,8 @@ class CommandLine(unittest.TestCase):
         status = Shared.reference.status
         flagged = {line: int((status[line] != "ok").sum()) for line in Shared.reference.lines}
         expected = ", ".join(f"{line} {count}" for line, count in flagged.items() if count)
-        self.assertIn(f"flagged samples left out (status not ok): {expected} (of 200 per line)",
-                      completed.stdout)
+        self.assertIn(f"flagged samples (status not ok): {expected} (of 200 per line); a box leaves out only "
+                      "those lacking its quantity", completed.stdout)
 
     def test_refuses_to_overwrite_plots_without_force(self):
         target = self.plots_copy()
@@ -357,8 +354,9 @@ class GrowthRate(unittest.TestCase):
 
 
 class YieldPressure(unittest.TestCase):
-    """With a yield pressure many tubes do not grow (status no_growth, v = 0): growthuq's summary
-    keeps them in v (as 0) and leaves them out of p, E and eta; the plots must do the same."""
+    """With a yield pressure many tubes do not grow (status no_growth, v = 0): their p, E and eta
+    were computed before the growth model flagged them, so growthuq's summary counts them in p,
+    E and eta as in v (as 0); the plots must do the same."""
 
     @classmethod
     def setUpClass(cls):
@@ -371,7 +369,7 @@ class YieldPressure(unittest.TestCase):
         cls.reference = Reference(out / "results.h5")
         cls.results = PLOTTING.results.read_results(out / "results.h5")
 
-    def test_no_growth_samples_count_in_v_only(self):
+    def test_no_growth_samples_count_in_every_quantity(self):
         reference = self.reference
         no_growth = {line: int((reference.status[line] == "no_growth").sum()) for line in reference.lines}
         self.assertGreater(no_growth["pme48"], 50)   # pme48's median turgor is below 0.2 MPa
@@ -379,7 +377,7 @@ class YieldPressure(unittest.TestCase):
         growth = PLOTTING.growth_rate.growth_rate_figure(self.results)
         for line in reference.lines:
             ok = int((reference.status[line] == "ok").sum())
-            for quantity, n in (("p", ok), ("eta", ok), ("v", ok + no_growth[line])):
+            for quantity, n in (("p", ok + no_growth[line]), ("eta", ok + no_growth[line]), ("v", ok + no_growth[line])):
                 label = one(boxes, f"{line}/{quantity}/n").get_text()
                 self.assertEqual(int(re.match(r"n = (\d+)", label).group(1)), n, (line, quantity))
             v = reference.counted(line, "v")

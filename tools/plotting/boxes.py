@@ -1,7 +1,7 @@
 """Box plots per plant line of turgor p, modulus E, viscosity eta and growth rate v (one panel
 per quantity the campaign computed): box q1-q3, line at the median, whiskers 10-90 %, n under
-each box. Samples with a flag are left out and counted under the box; the box statistics are
-the rows of summary.csv."""
+each box. Samples that lack the quantity (flagged before it was computed) are left out and counted
+under the box; the box statistics are the rows of summary.csv."""
 import math
 
 from .box_drawing import draw_box, label_below, room_for_labels
@@ -63,6 +63,6 @@ def box_figure(results):
     for ax in axes[len(quantities):]:
         ax.remove()
     figure.suptitle(f"{results.campaign_name}: per line, box q1-q3, line median, whiskers 10-90 %"
-                    "\nn: samples with status ok (for v also no_growth, v = 0); flagged samples "
-                    "left out", fontsize=9)
+                    "\nn: Monte Carlo samples holding a value (v = 0 for no_growth counts); "
+                    "flagged: samples lacking it, left out", fontsize=9)
     return figure

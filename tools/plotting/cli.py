@@ -74,19 +74,15 @@ def build_figures(results, results_dir, wanted, notes):
 
 
 def flag_notes(results):
-    """What the figures leave out: samples with a flag (the same rule as summary.csv)."""
-    left_out = {line.name: int((line.status != "ok").sum()) for line in results.lines}
-    no_growth = {line.name: int((line.status == "no_growth").sum()) for line in results.lines}
-    notes = []
-    if any(left_out.values()):
-        counts = ", ".join(f"{name} {count}" for name, count in left_out.items() if count)
-        notes.append(f"flagged samples left out (status not ok): {counts} "
-                     f"(of {results.samples_per_line} per line)")
-    if any(no_growth.values()):
-        counts = ", ".join(f"{name} {count}" for name, count in no_growth.items() if count)
-        notes.append(f"of those, no_growth samples (p <= p0) are kept as v = 0 in the growth-rate "
-                     f"statistics, as in summary.csv: {counts}")
-    return notes
+    """What the figures leave out of flagged samples (the same rule as summary.csv): a box only
+    the samples lacking its quantity, the correlogram and the PCA every flagged sample."""
+    flagged = {line.name: int((line.status != "ok").sum()) for line in results.lines}
+    if not any(flagged.values()):
+        return []
+    counts = ", ".join(f"{name} {count}" for name, count in flagged.items() if count)
+    return [f"flagged samples (status not ok): {counts} (of {results.samples_per_line} per line); a box "
+            f"leaves out only those lacking its quantity (n_flagged of summary.csv: p and E computed "
+            f"before a later flag, and v = 0 of no_growth, count), the correlogram and PCA all of them"]
 
 
 def _list_option(text, allowed):

@@ -1,8 +1,9 @@
 """A campaign's results.h5 (layout: campaigns/README.md, section "results.h5") read into plain
 objects: per line the columns with their quantity, unit and role, the sample statuses, the stored
-analysis and, when present, the relaxation curves. Which samples count follows growthuq's summaries: status ok,
-and for the growth rate v also no_growth (v = 0 is a valid prediction); the correlogram, like the
-engine's analysis, uses status ok only."""
+analysis and, when present, the relaxation curves. Which samples count follows growthuq's summaries: those
+holding a value of the quantity (every sample for an input; for an output, those whose model computed it,
+whatever flag a later model gave the sample, and v = 0 of no_growth); the correlogram, like the engine's
+analysis, uses status ok only."""
 import configparser
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -46,13 +47,10 @@ class Line:
         return next((column for column in self.columns if column.quantity == quantity), None)
 
     def counted(self, quantity):
-        """Values of `quantity` over the samples growthuq's summary counts, and how many were
-        left out (flagged)."""
+        """Values of `quantity` over the samples growthuq's summary counts (those holding a value:
+        NaN marks a sample the quantity lacks), and how many lack it (summary.csv's n_flagged)."""
         column = self.column(quantity)
-        keep = self.status == "ok"
-        if quantity == "v":
-            keep |= self.status == "no_growth"
-        keep &= np.isfinite(column.values)
+        keep = np.isfinite(column.values)
         return column.values[keep], int(keep.size - keep.sum())
 
     def ok_samples(self):

@@ -91,10 +91,6 @@ class PreparedCampaign {
   // (evaluate_checked).
   std::vector<double> evaluate_chunk(const PreparedLine& line, const LineDesign& design, ChunkRange range) const;
 
-  // The statuses under which the computed `output` of `line` holds a result (the declaration
-  // of the model that writes it, Evaluator::valued_statuses); none for an input.
-  StatusSet valued_statuses(const PreparedLine& line, std::string_view output) const;
-
  private:
   PreparedCampaign(Campaign campaign, Pool* pool, ProgressMode progress, std::ostream* log);
 

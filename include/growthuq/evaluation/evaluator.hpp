@@ -23,8 +23,8 @@ class Evaluator {
   virtual std::vector<std::string> reads() const = 0;
   virtual std::vector<std::string> writes() const = 0;
 
-  // The statuses other than ok under which the column `written` (one of writes()) still holds
-  // a result rather than NaN (sample_status.hpp, has_value); none unless an evaluator says so.
+  // The statuses other than ok, raised by this evaluator, under which the column `written` (one
+  // of writes()) still holds a result rather than NaN; none unless an evaluator says so.
   virtual StatusSet valued_statuses(std::string_view written) const {
     (void)written;
     return {};
@@ -48,6 +48,9 @@ std::vector<const Evaluator*> plan_evaluation(std::span<const Evaluator* const> 
 //   - every column of writes() is in the block, and each sample's value there is finite or the
 //     sample carries a non-ok status (a written column left NaN for an ok sample was not
 //     written);
+//   - and NaN for every sample that leaves with a non-ok status, unless this evaluator raised
+//     it and it is one of the column's valued_statuses (v = 0 for no_growth): a finite value
+//     is read downstream as computed (samples.csv's cells, the summaries' counts);
 //   - no column outside writes() was added, and every column it found that writes() does not
 //     name (its reads among them) holds the same bits as before (compared through a
 //     position-keyed checksum of each column, so the check reads the block without copying it);

@@ -17,14 +17,15 @@
 namespace growthuq {
 
 // One column of results, in the unit it is written in (inputs: the line file's unit; outputs:
-// the quantity's default unit). Flagged samples hold NaN, except under the statuses the
-// column's evaluator declares its values valid under (valued_statuses: v = 0 for no_growth).
+// the quantity's default unit). An input holds every drawn value. An output holds NaN wherever
+// its model did not compute it: the model flagged the sample, or an earlier model did (then it
+// never ran), except v = 0 under no_growth (Evaluator::valued_statuses). Values computed before
+// a later model flagged the sample stay (p and E of a sample whose viscosity failed).
 struct ResultColumn {
   std::string quantity;        // "k", "p", ...
   const Unit* unit = nullptr;  // never null
   bool is_input = false;
   LargeVector<double> values;  // a std::vector whose storage is reused from line to line (large_vector.hpp)
-  StatusSet valued_statuses = {};  // Evaluator::valued_statuses of the column (none for inputs)
 
   std::string column_name() const { return growthuq::column_name(quantity, *unit); }
 };
@@ -43,8 +44,9 @@ struct LineResult {
 };
 
 // The per-line, per-quantity row of summary.csv (src/stats/README.md: median, IQR, 10-90 %).
-// Statistics are over the samples whose value is a result (has_value: status ok, or one of
-// the column's valued statuses, e.g. no_growth for v = 0); n_flagged counts the others.
+// Statistics are over the samples that hold a value of the quantity (holds_value in
+// quantity_summary.hpp: the non-empty cells of samples.csv); n_flagged counts the samples the
+// quantity lacks (0 for an input).
 struct QuantitySummary {
   std::string line;
   std::string quantity;

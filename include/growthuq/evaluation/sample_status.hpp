@@ -41,15 +41,6 @@ class StatusSet {
   std::uint32_t bits_ = 0;
 };
 
-// Whether a sample's value in a column is a result: its status is ok, or one of the statuses
-// `valued` under which the column's evaluator declares its value a result
-// (Evaluator::valued_statuses). Most flags leave NaN; no_growth is the one that is itself a
-// prediction: a tube at or below the yield pressure grows at v = 0, and the growth evaluator
-// declares v valued under it (its other columns, p, E, ... still count only when ok).
-constexpr bool has_value(SampleStatus status, StatusSet valued) noexcept {
-  return status == SampleStatus::ok || valued.contains(status);
-}
-
 // Short name used in CSV/HDF5 ("ok", "lambda_not_above_one", ...).
 std::string_view to_string(SampleStatus status);
 

@@ -3,6 +3,7 @@
 // the median from order statistics (Conover 1999, "Practical Nonparametric Statistics", 3.2).
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -30,19 +31,22 @@ struct MedianConfidenceRanks {
 // level in (0, 1); std::invalid_argument otherwise (a programming error, not user input).
 MedianConfidenceRanks median_confidence_ranks(std::size_t n, double level = 0.95);
 
-// Whether a sample with `status` enters the statistics of `column`: when its value there is a
-// result, has_value(status, column.valued_statuses) (sample_status.hpp).
-bool counts_in_summary(const ResultColumn& column, SampleStatus status);
+// Whether a sample enters the statistics of a column: when the column holds a value for it
+// (src/stats/README.md, Eq. (T3)). An input holds every drawn value; an output holds a value
+// exactly where its model computed one, since a model leaves NaN wherever it flags a sample or
+// finds it flagged (evaluate_checked enforces it), except under its valued statuses (v = 0
+// for no_growth). So a sample flagged by a later model (its growth rate failed) still counts
+// for p and E, which were computed, and what the statistics count is what samples.csv shows
+// as a non-empty cell.
+inline bool holds_value(double value) noexcept { return std::isfinite(value); }
 
-// The summary of one column over the samples that count (above). Quantiles use numpy's
-// "linear" rule (sorted_quantile); sd divides by n - 1. A counted sample whose value is not
-// finite (an evaluator bug: flagged samples carry NaN) is left out and counted in n_flagged.
+// The summary of one column over the samples that hold a value (above); n_flagged counts the
+// others, the samples the quantity lacks (0 for an input). Quantiles use numpy's "linear" rule
+// (sorted_quantile); sd divides by n - 1.
 // Cells that are undefined are NaN and writers print them as empty cells:
 //   n = 0: every statistic;  n = 1: sd;  n <= 5: median_ci_low/high (95 % not reachable, see
 //   MedianConfidenceRanks; reporting the range as a "95 %" interval would overstate it).
-// status.size() must equal column.values.size() (std::invalid_argument otherwise).
-QuantitySummary summarize_quantity(const std::string& line, const ResultColumn& column,
-                                   std::span<const SampleStatus> status);
+QuantitySummary summarize_quantity(const std::string& line, const ResultColumn& column);
 
 // InputError at `location` naming the summary's line, quantity and statistic when a statistic
 // it defines (every one but those the rules above leave undefined for its n) is not finite:
