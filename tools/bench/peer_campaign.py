@@ -539,9 +539,9 @@ def median_confidence_ranks(n, level=0.95):
     return (good, n + 1 - good) if good > 0 else None
 
 
-def summarize(line, quantity, unit, values, status):
-    counted = (status == OK) | ((status == NO_GROWTH) if quantity == 'v' else False)
-    x = values[counted & np.isfinite(values)]
+def summarize(line, quantity, unit, values):
+    # The engine's rule: every sample holding a value (NaN where the sample lacks the quantity).
+    x = values[np.isfinite(values)]
     n = len(x)
     row = {'line': line, 'quantity': quantity, 'unit': unit, 'n': n, 'n_flagged': len(values) - n}
     keys = ['median', 'q1', 'q3', 'iqr', 'p10', 'p90', 'mean', 'sd', 'median_ci_low', 'median_ci_high']
@@ -698,7 +698,7 @@ def main():
             unit = DEFAULT_UNIT[output]
             columns.append((column_name(output, unit), output, unit, False, outputs[output] / UNITS[unit][1]))
         t2 = time.perf_counter()
-        line_rows = [summarize(line.name, q, unit, x, status)
+        line_rows = [summarize(line.name, q, unit, x)
                      for output in campaign.outputs for _, q, unit, _, x in columns if q == output]
         achieved = spearman_of_strata(ranks) if campaign.samples >= 2 else np.zeros((0, 0))
         analysis = analyze_line(columns, status)
