@@ -47,8 +47,8 @@ struct CampaignLine {
 // raw-data line has none (replicates 0).
 struct DataUncertaintySettings {
   // Chosen in campaigns/README.md ("Data uncertainty", "Why 200 replicates"): an end of the
-  // interval moves by about 5 % of its width between two bootstraps, for about the CPU of the
-  // campaign itself (tools/bench/data-uncertainty-replicates).
+  // interval moves by about 5 % of its width between two bootstraps, for about 1.5 times the
+  // CPU of campaigns/from_raw.ini itself (tools/bench/data-uncertainty-replicates).
   static constexpr std::size_t default_replicates = 200;
   // Samples per line and replicate when `samples` is not given: the campaign's, at most this
   // many (the replicates' Monte Carlo error is then small next to the data's, and a campaign of
