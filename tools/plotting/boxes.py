@@ -86,7 +86,7 @@ def box_figure(results):
         raise FigureSkipped("box plots: none of p, E, eta, v among the campaign's outputs")
     columns = 2 if len(quantities) > 1 else 1
     rows = math.ceil(len(quantities) / columns)
-    panel_width = max(3.2, 0.6 * len(results.lines) + 1.2)
+    panel_width = max(3.2, 0.8 * len(results.lines) + 1.2)  # room for "1000 samples" under each box
     figure = new_figure(columns * panel_width, rows * 3.3 + 0.6)
     axes = figure.subplots(rows, columns, squeeze=False).ravel()
     colors = line_colors(results.line_names())
