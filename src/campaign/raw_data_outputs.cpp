@@ -191,11 +191,12 @@ std::string uncertainty_report(std::span<const DataUncertainty> rows, const Camp
                      std::to_string(rows.front().samples) +
                      " samples per line; the data intervals of the summary above, with the replicates behind them):\n" +
                      padded("line", line_width) + padded("quantity", 10) + padded("unit", 8) + padded("median", 10) +
-                     padded("Monte Carlo 95 % CI", 22) + padded("data 95 % interval", 22) + "replicates\n";
+                     padded("data 95 % interval", 22) + padded("Monte Carlo 95 % CI", 22) + "replicates\n";
   for (const DataUncertainty& row : rows) {
     text += padded(row.line, line_width) + padded(row.quantity, 10) + padded(row.unit, 8) + padded(significant(row.median), 10) +
+            padded("[" + significant(row.low) + ", " + significant(row.high) + "]", 22) +
             padded("[" + significant(row.median_ci_low) + ", " + significant(row.median_ci_high) + "]", 22) +
-            padded("[" + significant(row.low) + ", " + significant(row.high) + "]", 22) + std::to_string(row.replicates) +
+            std::to_string(row.replicates) +
             (row.failed > 0 ? " (" + std::to_string(row.failed) + " failed)" : std::string()) + "\n";
   }
   return text;
