@@ -192,12 +192,21 @@ void read_physics_section(const IniDocument& document, const IniSection& section
 
 void read_data_uncertainty_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
   SectionReader reader(document, section);
-  const IniEntry& replicates = reader.required("replicates");
-  campaign.data_uncertainty.replicates = parse_count(replicates.value, reader.location(replicates), replicates.key, 0, 100000);
+  if (const IniEntry* replicates = reader.optional("replicates")) {
+    campaign.data_uncertainty.replicates = parse_count(replicates->value, reader.location(*replicates), replicates->key, 0, 100000);
+    campaign.data_uncertainty.replicates_given = true;
+  }
   if (const IniEntry* samples = reader.optional("samples")) {
     campaign.data_uncertainty.samples = parse_count(samples->value, reader.location(*samples), samples->key, 10, 10000000);
   }
   reader.reject_unknown_keys("replicates, samples");
+}
+
+// Data uncertainty is on by default for raw-data lines: replicates not stated in the file are
+// the default when a line is given by raw data, 0 otherwise.
+void apply_default_replicates(Campaign& campaign) {
+  if (campaign.data_uncertainty.replicates_given) return;
+  campaign.data_uncertainty.replicates = has_raw_data_line(campaign) ? DataUncertaintySettings::default_replicates : 0;
 }
 
 CampaignLine read_line_section(const IniDocument& document, const IniSection& section) {
@@ -303,11 +312,11 @@ Campaign parse_campaign(const std::string& text, const std::string& path) {
       }
     }
   }
-  if (campaign.data_uncertainty.replicates > 0 &&
-      std::none_of(campaign.lines.begin(), campaign.lines.end(), [](const CampaignLine& line) { return !line.raw_path.empty(); })) {
+  if (campaign.data_uncertainty.replicates > 0 && !has_raw_data_line(campaign)) {
     throw InputError(path, "[data_uncertainty] resamples the tubes of lines given by raw = FILE, and no line is: remove the "
                            "section or give a line's raw data");
   }
+  apply_default_replicates(campaign);
   const bool wants_growth = std::find(campaign.outputs.begin(), campaign.outputs.end(), "v") != campaign.outputs.end();
   if (wants_growth && campaign.reference_line.empty()) {
     throw InputError(path, "output v needs [growth] reference_line: the line whose experimental growth rate calibrates kappa");
@@ -316,6 +325,15 @@ Campaign parse_campaign(const std::string& text, const std::string& path) {
     throw InputError(path, "[growth] reference_line = '" + campaign.reference_line + "': expected one of the campaign's lines");
   }
   return campaign;
+}
+
+bool has_raw_data_line(const Campaign& campaign) {
+  return std::any_of(campaign.lines.begin(), campaign.lines.end(), [](const CampaignLine& line) { return !line.raw_path.empty(); });
+}
+
+std::size_t data_uncertainty_samples(const Campaign& campaign) {
+  if (campaign.data_uncertainty.samples > 0) return campaign.data_uncertainty.samples;
+  return std::min(campaign.samples, DataUncertaintySettings::default_samples_cap);
 }
 
 Campaign read_campaign(const std::string& path) {
@@ -346,6 +364,7 @@ void apply_overrides(Campaign& campaign, const CampaignOverrides& overrides) {
     }
     if (selected.empty()) throw_bad_value("command line", "--lines", *overrides.lines, "a comma-separated list of line names");
     campaign.lines = std::move(selected);
+    apply_default_replicates(campaign);
     if (!campaign.reference_line.empty() && campaign.find_line(campaign.reference_line) == nullptr) {
       throw_bad_value("command line", "--lines", *overrides.lines,
                       "a selection that keeps the reference line '" + campaign.reference_line + "' (it calibrates kappa)");

@@ -202,6 +202,8 @@ class OutputObserver final : public RunObserver {
     wait_for_writer();
     const Campaign& c = campaign_.campaign();
     if (samples_) samples_->finish();
+    add_data_intervals(summaries_, uncertainty.rows);
+    if (h5_) h5_->replace_summaries(summaries_);
     write_file_atomically(in_directory(staging_, summary_csv_name), summary_csv_text(summaries_), Overwrite::allow);
     const std::string raw_data_report =
         write_raw_data_outputs(campaign_, summaries_, std::move(uncertainty), h5_ ? &*h5_ : nullptr, staging_);
@@ -219,7 +221,7 @@ class OutputObserver final : public RunObserver {
     std::ostringstream report;
     report << "campaign '" << c.name << "': " << c.lines.size() << " lines x " << c.samples << " samples, seed " << c.seed
            << ", results in " << c.output_dir << "\n\n"
-           << format_summary_table(summaries_);
+           << format_summary_table(summaries_) << format_interval_note(c);
     if (outcome.run.calibrated) {
       report << "\nkappa = " << format_double(outcome.run.kappa) << " (calibrated on " << c.reference_line
              << ": its predicted median v equals the median of its v_exp, "

@@ -24,21 +24,44 @@ std::string padded(const std::string& text, std::size_t width) {
   return text.size() >= width ? text + " " : text + std::string(width - text.size(), ' ');
 }
 
+bool has_data_interval(const QuantitySummary& summary) {
+  return std::isfinite(summary.data_ci_low) && std::isfinite(summary.data_ci_high);
+}
+
 }  // namespace
 
 std::string format_summary_table(std::span<const QuantitySummary> summaries) {
   std::size_t line_width = 6;
   for (const QuantitySummary& s : summaries) line_width = std::max(line_width, s.line.size() + 2);
-  std::string text = padded("line", line_width) + padded("quantity", 10) + padded("unit", 8) +
-                     padded("median [95 % CI]", 30) + padded("IQR", 11) + padded("10-90 %", 22) + "flagged\n";
+  // The data interval, where a bootstrap gave one, comes first: it is the uncertainty a lab can
+  // quote; the Monte Carlo CI only says how well the samples pin the campaign's own median.
+  const bool data = std::any_of(summaries.begin(), summaries.end(), has_data_interval);
+  std::string text = padded("line", line_width) + padded("quantity", 10) + padded("unit", 8) + padded("median", 10) +
+                     (data ? padded("data 95 % interval", 22) : std::string()) + padded("Monte Carlo 95 % CI", 22) +
+                     padded("IQR", 11) + padded("10-90 %", 22) + "flagged\n";
   for (const QuantitySummary& s : summaries) {
-    const std::string median = number(s.median) + " [" + number(s.median_ci_low) + ", " + number(s.median_ci_high) + "]";
+    const std::string data_interval = has_data_interval(s) ? "[" + number(s.data_ci_low) + ", " + number(s.data_ci_high) + "]" : "-";
+    const std::string monte_carlo = "[" + number(s.median_ci_low) + ", " + number(s.median_ci_high) + "]";
     const std::string range = number(s.p10) + " - " + number(s.p90);
-    text += padded(s.line, line_width) + padded(s.quantity, 10) + padded(s.unit, 8) + padded(median, 30) +
-            padded(number(s.iqr), 11) + padded(range, 22) + std::to_string(s.n_flagged) + " of " +
-            std::to_string(s.n + s.n_flagged) + "\n";
+    text += padded(s.line, line_width) + padded(s.quantity, 10) + padded(s.unit, 8) + padded(number(s.median), 10) +
+            (data ? padded(data_interval, 22) : std::string()) + padded(monte_carlo, 22) + padded(number(s.iqr), 11) +
+            padded(range, 22) + std::to_string(s.n_flagged) + " of " + std::to_string(s.n + s.n_flagged) + "\n";
   }
   return text;
+}
+
+std::string format_interval_note(const Campaign& campaign) {
+  const std::size_t replicates = campaign.data_uncertainty.replicates;
+  if (replicates > 0) {
+    return "data 95 % interval: a parametric bootstrap over the tubes of the raw-data lines, " + std::to_string(replicates) +
+           " replicates x " + std::to_string(data_uncertainty_samples(campaign)) +
+           " samples per line (campaigns/README.md, \"Data uncertainty\"); Monte Carlo 95 % CI: the error of this run's " +
+           std::to_string(campaign.samples) + " samples alone\n";
+  }
+  const std::string why = has_raw_data_line(campaign) ? "[data_uncertainty] replicates = 0 switched the bootstrap off"
+                                                      : "no line is given by raw data, so there is no bootstrap over tubes";
+  return "note: the intervals are Monte Carlo only (" + why +
+         "): they shrink with more samples and hold nothing of the uncertainty of having measured a few dozen tubes\n";
 }
 
 std::string format_input_correlation(const LineResult& result) {

@@ -1,17 +1,25 @@
 // The readable summary `growthuq run` prints on stdout: per line and quantity the median with
-// its 95 % confidence interval, the IQR, the 10-90 % range and the flagged count; kappa; and per
-// line the input rank correlation the design achieved next to its target.
+// its data-uncertainty interval (when a bootstrap ran) and then its Monte Carlo 95 % confidence
+// interval, the IQR, the 10-90 % range and the flagged count; kappa; and per line the input rank
+// correlation the design achieved next to its target.
 #pragma once
 
 #include <span>
 #include <string>
 
+#include "growthuq/campaign/campaign_file.hpp"
 #include "growthuq/evaluation/line_result.hpp"
 
 namespace growthuq {
 
 // A fixed-width table, one row per summary, four significant digits; "-" for undefined cells.
+// The column "data 95 % interval" is there when a summary has one (data_ci_low/high finite).
 std::string format_summary_table(std::span<const QuantitySummary> summaries);
+
+// The line under the summary table saying what its intervals are: the bootstrap that gave the
+// data intervals (`replicates` > 0), or that the intervals are Monte Carlo only, and why
+// (replicates = 0 on raw-data lines, or no raw-data line).
+std::string format_interval_note(const Campaign& campaign);
 
 // "  k, d: target +0.450  achieved +0.447" for each pair with a non-zero target, then the
 // largest |achieved| over the pairs meant to be independent. Empty when fewer than two inputs.

@@ -440,6 +440,11 @@ class LineRun {
         summary.line = result.name;
         summary.quantity = result.columns[c].quantity;
         summary.unit = std::string(result.columns[c].unit->symbol);
+        // The reference line's v median is kappa's definition; every other line's holds kappa's
+        // Monte Carlo error too (kappa.hpp, widen_median_interval).
+        if (kappa_ && summary.quantity == KappaCalibration::quantity && !kappa_->is_reference(result.name)) {
+          kappa_->widen_median_interval(summary.median, summary.median_ci_low, summary.median_ci_high);
+        }
         finished.summaries.push_back(std::move(summary));
       }
     }

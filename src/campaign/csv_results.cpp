@@ -50,7 +50,7 @@ void SamplesCsvWriter::finish() { file_.commit(); }
 
 std::vector<std::string> summary_csv_header() {
   return {"line", "quantity", "unit", "n", "n_flagged", "median", "q1", "q3", "iqr", "p10", "p90", "mean", "sd",
-          "median_ci_low", "median_ci_high"};
+          "median_ci_low", "median_ci_high", "data_ci_low", "data_ci_high"};
 }
 
 std::string summary_csv_text(std::span<const QuantitySummary> summaries) {
@@ -58,7 +58,8 @@ std::string summary_csv_text(std::span<const QuantitySummary> summaries) {
   for (const QuantitySummary& s : summaries) {
     writer.add_row({s.line, s.quantity, s.unit, std::to_string(s.n), std::to_string(s.n_flagged), number_cell(s.median),
                     number_cell(s.q1), number_cell(s.q3), number_cell(s.iqr), number_cell(s.p10), number_cell(s.p90),
-                    number_cell(s.mean), number_cell(s.sd), number_cell(s.median_ci_low), number_cell(s.median_ci_high)});
+                    number_cell(s.mean), number_cell(s.sd), number_cell(s.median_ci_low), number_cell(s.median_ci_high),
+                    number_cell(s.data_ci_low), number_cell(s.data_ci_high)});
   }
   return writer.text();
 }

@@ -40,7 +40,9 @@ class SamplesCsvWriter {
 std::vector<std::string> summary_csv_header();
 
 // summary.csv text: one row per summary, numbers in shortest round-trip form; a statistic
-// that is undefined (no unflagged sample) is an empty cell.
+// that is undefined (no unflagged sample) is an empty cell. median_ci_low/high are the Monte
+// Carlo 95 % CI of the median, data_ci_low/high its data-uncertainty interval (empty where no
+// bootstrap ran).
 std::string summary_csv_text(std::span<const QuantitySummary> summaries);
 
 }  // namespace growthuq

@@ -193,7 +193,7 @@ std::vector<double> replicate_numbers(const PreparedCampaign& campaign, std::uin
 // would have found them replicate after replicate.
 DataUncertaintyResult summarize_replicates(const PreparedCampaign& campaign, const std::vector<std::vector<double>>& replicates) {
   const Campaign& c = campaign.campaign();
-  const std::size_t samples = c.data_uncertainty.samples > 0 ? c.data_uncertainty.samples : c.samples;
+  const std::size_t samples = data_uncertainty_samples(c);
   const std::vector<LayoutRow> layout = bootstrap_layout(campaign);
   DataUncertaintyResult result;
   std::vector<std::vector<double>> medians(layout.size());  // [row][replicate]
@@ -251,7 +251,7 @@ DataUncertaintyResult estimate_data_uncertainty(const PreparedCampaign& campaign
   const Campaign& c = campaign.campaign();
   const std::size_t replicates = c.data_uncertainty.replicates;
   if (replicates == 0) return {};
-  const std::size_t samples = c.data_uncertainty.samples > 0 ? c.data_uncertainty.samples : c.samples;
+  const std::size_t samples = data_uncertainty_samples(c);
   const std::uint64_t root = derive_key(mix64(c.seed), "data_uncertainty");
 
   // One replicate per chunk (tens of milliseconds each): the pool hands them out as processes

@@ -179,7 +179,8 @@ constexpr const char* method_text =
     "parametric bootstrap over tubes: each replicate redraws every raw-data variable (as many values as the line "
     "has) from its fitted law, refits it (least AIC), reruns the campaign's models with its own seed and takes the "
     "median; data_ci_low/high are the 2.5 and 97.5 % quantiles of the replicate medians (percentile interval). It "
-    "holds the uncertainty from fitting finitely many tubes; median_ci_low/high hold the Monte Carlo error only.";
+    "holds the uncertainty from fitting finitely many tubes; median_ci_low/high hold the Monte Carlo error only (for "
+    "the v of a line other than the reference line also kappa's).";
 
 std::string uncertainty_report(std::span<const DataUncertainty> rows, const Campaign& campaign) {
   if (rows.empty()) return {};
@@ -188,19 +189,30 @@ std::string uncertainty_report(std::span<const DataUncertainty> rows, const Camp
   std::string text = "\ndata uncertainty of the medians (parametric bootstrap over tubes, " +
                      std::to_string(campaign.data_uncertainty.replicates) + " replicates x " +
                      std::to_string(rows.front().samples) +
-                     " samples per line; the 95 % CI of summary.csv is Monte Carlo error only):\n" +
+                     " samples per line; the data intervals of the summary above, with the replicates behind them):\n" +
                      padded("line", line_width) + padded("quantity", 10) + padded("unit", 8) + padded("median", 10) +
-                     padded("Monte Carlo 95 % CI", 22) + padded("data 95 % interval", 22) + "replicates\n";
+                     padded("data 95 % interval", 22) + padded("Monte Carlo 95 % CI", 22) + "replicates\n";
   for (const DataUncertainty& row : rows) {
     text += padded(row.line, line_width) + padded(row.quantity, 10) + padded(row.unit, 8) + padded(significant(row.median), 10) +
+            padded("[" + significant(row.low) + ", " + significant(row.high) + "]", 22) +
             padded("[" + significant(row.median_ci_low) + ", " + significant(row.median_ci_high) + "]", 22) +
-            padded("[" + significant(row.low) + ", " + significant(row.high) + "]", 22) + std::to_string(row.replicates) +
+            std::to_string(row.replicates) +
             (row.failed > 0 ? " (" + std::to_string(row.failed) + " failed)" : std::string()) + "\n";
   }
   return text;
 }
 
 }  // namespace
+
+void add_data_intervals(std::span<QuantitySummary> summaries, std::span<const DataUncertainty> rows) {
+  for (QuantitySummary& summary : summaries) {
+    for (const DataUncertainty& row : rows) {
+      if (row.line != summary.line || row.quantity != summary.quantity) continue;
+      summary.data_ci_low = row.low;
+      summary.data_ci_high = row.high;
+    }
+  }
+}
 
 std::string data_uncertainty_csv_text(std::span<const DataUncertainty> rows) {
   CsvWriter writer({"line", "quantity", "unit", "median", "median_ci_low", "median_ci_high", "data_ci_low",

@@ -54,6 +54,10 @@ inline constexpr const char* data_uncertainty_csv_name = "data_uncertainty.csv";
 std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<const QuantitySummary> summaries,
                                    DataUncertaintyResult uncertainty, ResultsH5Writer* h5, const std::string& directory);
 
+// Each summary's data interval (data_ci_low/high) from the bootstrap row of its line and
+// quantity; summaries without a row keep NaN.
+void add_data_intervals(std::span<QuantitySummary> summaries, std::span<const DataUncertainty> rows);
+
 // The data-uncertainty rows as CSV text (the columns of /data_uncertainty above).
 std::string data_uncertainty_csv_text(std::span<const DataUncertainty> rows);
 

@@ -6,7 +6,6 @@
 #include "campaign/progress.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/printable.hpp"
-#include "growthuq/stats/quantity_summary.hpp"
 
 namespace growthuq {
 namespace {
@@ -24,15 +23,18 @@ class SummaryObserver final : public RunObserver {
   void chunk_done(ChunkRange range) override { progress_.advance(range.end - range.begin); }
 
   void line_done(const LineResult& result, const std::vector<std::string>& warnings) override {
+    LineResult copy = result;
+    line_analyzed(std::move(copy), line_statistics(result, campaign_.campaign().outputs), warnings);
+  }
+
+  // The run's summaries as they are, so that another line's v interval holds kappa's error as in
+  // summary.csv (Eq. (G5b), src/growth/README.md).
+  void line_analyzed(LineResult&& result, LineStatistics&& statistics, const std::vector<std::string>& warnings) override {
     progress_.line_finished();
     for (const std::string& warning : warnings) {
       log_ << printable("growthuq tradeoff: line '" + result.name + "' at " + std::to_string(result.samples()) + " samples: " + warning) << "\n";
     }
-    for (const std::string& output : campaign_.campaign().outputs) {
-      for (const ResultColumn& column : result.columns) {
-        if (column.quantity == output) summaries_.push_back(summarize_quantity(result.name, column));
-      }
-    }
+    summaries_.insert(summaries_.end(), statistics.summaries.begin(), statistics.summaries.end());
   }
 
   std::vector<QuantitySummary> take_summaries() { return std::move(summaries_); }

@@ -2,6 +2,7 @@
 // the flags, every line, matrix and raw-data file, the raw-data fits, the models each line
 // needs, the output directory, the memory and disk the run will take on this machine), then
 // the plan on stdout. Nothing is sampled and nothing is written.
+#include <cmath>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -12,6 +13,7 @@
 #include "commands.hpp"
 #include "growthuq/campaign/campaign_run.hpp"
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
 #include "options.hpp"
 
 namespace growthuq::cli {
@@ -33,6 +35,21 @@ std::string_view correlation_text(const PreparedLine& line) {
     case CorrelationSource::physics: return "rank correlation from the forward thin-shell model";
   }
   return "";
+}
+
+// The bootstrap's share of the run, which the time line above leaves out: it samples every line
+// again in each replicate and refits the raw-data laws (campaigns/README.md, "Data uncertainty").
+std::string data_uncertainty_plan(const Campaign& c) {
+  const std::size_t replicates = c.data_uncertainty.replicates;
+  if (replicates == 0) {
+    return std::string("data uncertainty: none, the intervals will be Monte Carlo only (") +
+           (has_raw_data_line(c) ? "[data_uncertainty] replicates = 0" : "no line is given by raw data") + ")\n";
+  }
+  const std::size_t samples = data_uncertainty_samples(c);
+  return "data uncertainty: a bootstrap of " + std::to_string(replicates) + " replicates x " + std::to_string(samples) +
+         " samples per line (each refits the raw-data laws): " + std::to_string(replicates * samples) +
+         " more samples per line, " + format_double(std::round(10.0 * static_cast<double>(replicates * samples) / static_cast<double>(c.samples)) / 10.0) +
+         " times the run's own ([data_uncertainty] replicates = 0 switches it off)\n";
 }
 
 void print_plan(const PreparedCampaign& prepared, const RunFootprint& footprint, const MachineRoom& room) {
@@ -60,7 +77,7 @@ void print_plan(const PreparedCampaign& prepared, const RunFootprint& footprint,
             << "), disk " << readable_size(footprint.disk_bytes) << " ("
             << (room.disk_bytes ? readable_size(*room.disk_bytes) + " free there" : std::string("free space unknown")) << ")\n"
             << "time: not estimated (growthuq tradeoff " << c.path << " measures it for sample counts you choose)\n"
-            << "checked: nothing was sampled or written\n";
+            << data_uncertainty_plan(c) << "checked: nothing was sampled or written\n";
 }
 
 }  // namespace

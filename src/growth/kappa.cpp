@@ -8,6 +8,7 @@
 #include "finite_checks.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/stats/quantity_summary.hpp"
 
 namespace growthuq {
 namespace {
@@ -68,8 +69,37 @@ void apply_kappa(std::span<double> v, std::span<SampleStatus> status, double kap
 void KappaCalibration::calibrate(std::span<const double> v, double v_to_si, std::span<const SampleStatus> status) {
   std::vector<double> v_si(v.begin(), v.end());
   for (double& value : v_si) value *= v_to_si;
-  kappa_ = calibrate_kappa(reference_line_, experimental_median_, median_growth_rate(v_si, status));
+  const double predicted = median_growth_rate(v_si, status);
+  kappa_ = calibrate_kappa(reference_line_, experimental_median_, predicted);
   calibrated_ = true;
+  // kappa's Monte Carlo error: the order-statistic 95 % CI of the growing samples' median.
+  std::vector<double> growing;
+  for (std::size_t i = 0; i < v_si.size() && i < status.size(); ++i) {
+    if (status[i] == SampleStatus::ok) growing.push_back(v_si[i]);
+  }
+  const MedianConfidenceRanks ranks = median_confidence_ranks(growing.size());
+  if (!ranks.reached) return;
+  std::sort(growing.begin(), growing.end());
+  const double predicted_low = growing[ranks.lower - 1], predicted_high = growing[ranks.upper - 1];
+  if (!(predicted_low > 0.0)) return;  // a growing sample's rate is positive; no interval otherwise
+  kappa_ci_low_ = experimental_median_ / predicted_high;
+  kappa_ci_high_ = experimental_median_ / predicted_low;
+}
+
+void KappaCalibration::widen_median_interval(double median, double& low, double& high) const {
+  if (!calibrated_) return;
+  if (!std::isfinite(kappa_ci_low_) || !std::isfinite(kappa_ci_high_)) {
+    low = high = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
+  const double below = std::log(kappa_ / kappa_ci_low_);   // ln(P_hi / P)
+  const double above = std::log(kappa_ci_high_ / kappa_);  // ln(P / P_lo)
+  if (!(median > 0.0)) {
+    if (high > 0.0) high *= std::exp(above);
+    return;
+  }
+  if (low > 0.0) low = median * std::exp(-std::hypot(std::log(median / low), below));
+  if (high > 0.0) high = median * std::exp(std::hypot(std::log(high / median), above));
 }
 
 }  // namespace growthuq

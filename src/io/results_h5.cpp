@@ -233,10 +233,10 @@ struct SummaryRow {
   const char* unit;
   std::uint64_t n;
   std::uint64_t n_flagged;
-  double median, q1, q3, iqr, p10, p90, mean, sd, median_ci_low, median_ci_high;
+  double median, q1, q3, iqr, p10, p90, mean, sd, median_ci_low, median_ci_high, data_ci_low, data_ci_high;
 };
 
-void write_summary(H5::Group& group, const std::string& name, const std::vector<QuantitySummary>& summaries) {
+H5::CompType summary_type() {
   const H5::StrType text = string_type();
   H5::CompType memory(sizeof(SummaryRow));
   memory.insertMember("line", HOFFSET(SummaryRow, line), text);
@@ -250,14 +250,25 @@ void write_summary(H5::Group& group, const std::string& name, const std::vector<
       {"p10", HOFFSET(SummaryRow, p10)},       {"p90", HOFFSET(SummaryRow, p90)},
       {"mean", HOFFSET(SummaryRow, mean)},     {"sd", HOFFSET(SummaryRow, sd)},
       {"median_ci_low", HOFFSET(SummaryRow, median_ci_low)},
-      {"median_ci_high", HOFFSET(SummaryRow, median_ci_high)}};
+      {"median_ci_high", HOFFSET(SummaryRow, median_ci_high)},
+      {"data_ci_low", HOFFSET(SummaryRow, data_ci_low)},
+      {"data_ci_high", HOFFSET(SummaryRow, data_ci_high)}};
   for (const auto& [member, offset] : statistics) memory.insertMember(member, offset, H5::PredType::NATIVE_DOUBLE);
+  return memory;
+}
 
+std::vector<SummaryRow> summary_rows(const std::vector<QuantitySummary>& summaries) {
   std::vector<SummaryRow> rows;
   for (const QuantitySummary& s : summaries) {
-    rows.push_back({s.line.c_str(), s.quantity.c_str(), s.unit.c_str(), s.n, s.n_flagged, s.median, s.q1, s.q3,
-                    s.iqr, s.p10, s.p90, s.mean, s.sd, s.median_ci_low, s.median_ci_high});
+    rows.push_back({s.line.c_str(), s.quantity.c_str(), s.unit.c_str(), s.n, s.n_flagged, s.median, s.q1, s.q3, s.iqr,
+                    s.p10, s.p90, s.mean, s.sd, s.median_ci_low, s.median_ci_high, s.data_ci_low, s.data_ci_high});
   }
+  return rows;
+}
+
+void write_summary(H5::Group& group, const std::string& name, const std::vector<QuantitySummary>& summaries) {
+  const H5::CompType memory = summary_type();
+  const std::vector<SummaryRow> rows = summary_rows(summaries);
   const hsize_t size = rows.size();
   H5::DataSet dataset = group.createDataSet(name, memory, H5::DataSpace(1, &size), untimed_dataset());
   if (!rows.empty()) dataset.write(rows.data(), memory);
@@ -440,6 +451,27 @@ void ResultsH5Writer::write_line(const LineResult& result, const std::vector<Qua
   }
   lines_written_.push_back(result.name);
   summaries_.insert(summaries_.end(), summaries.begin(), summaries.end());
+}
+
+void ResultsH5Writer::replace_summaries(const std::vector<QuantitySummary>& summaries) {
+  if (!file_) throw std::logic_error("ResultsH5Writer::replace_summaries called after finish");
+  if (summaries.size() != summaries_.size()) throw std::invalid_argument("replace_summaries: not the rows written");
+  try {
+    for (const std::string& line : lines_written_) {
+      std::vector<QuantitySummary> rows;
+      for (const QuantitySummary& summary : summaries) {
+        if (summary.line == line) rows.push_back(summary);
+      }
+      H5::DataSet dataset = file_->file.openDataSet("lines/" + line + "/summary");
+      if (dataset.getSpace().getSimpleExtentNpoints() != static_cast<hssize_t>(rows.size())) {
+        throw std::invalid_argument("replace_summaries: line " + line + " has another number of rows");
+      }
+      if (!rows.empty()) dataset.write(summary_rows(rows).data(), summary_type());
+    }
+  } catch (const H5::Exception& error) {
+    rethrow_hdf5(file_->partial, error);
+  }
+  summaries_ = summaries;
 }
 
 void ResultsH5Writer::finish(const CampaignMetadata& metadata) {

@@ -111,4 +111,12 @@ with h5py.File(results + "/results.h5", "r") as f:
         replicates = f["lines/%s/data_uncertainty_replicates/%s" % key][:]
         expect(len(replicates) == row["replicates"] and row["replicates"] + row["failed_replicates"] == 20, "replicates")
         expect(abs(np.percentile(replicates, 2.5) - row["data_ci_low"]) <= 1e-12 * abs(row["data_ci_low"]), "2.5 % of replicates")
+        # The data interval sits beside the Monte Carlo CI in summary.csv, /summary and the line's
+        # summary, the same numbers as the bootstrap's table (the 97.5 % of its replicate medians).
+        expect(abs(np.percentile(replicates, 97.5) - row["data_ci_high"]) <= 1e-12 * abs(row["data_ci_high"]), "97.5 %")
+        for end in ("data_ci_low", "data_ci_high"):
+            expect(float(summary[key][end]) == row[end], "summary.csv %s %s" % (end, key))
+            for h5_summary in (f["summary"][:], f["lines/%s/summary" % key[0]][:]):
+                match = [r for r in h5_summary if (text(r["line"]), text(r["quantity"])) == key]
+                expect(len(match) == 1 and match[0][end] == row[end], "results.h5 summary %s %s" % (end, key))
 print("raw-data results checked with h5py")

@@ -128,7 +128,24 @@ TEST_CASE("a line comes from exactly one of a line file and raw data; the data b
   CHECK(campaign.lines[0].raw_path.empty());
   CHECK(campaign.data_uncertainty.replicates == 200);
   CHECK(campaign.data_uncertainty.samples == 500);
-  CHECK(parse_campaign(raw, file).data_uncertainty.replicates == 0);
+  // Without the section a campaign with a raw-data line gets the default bootstrap, one without
+  // none; --lines leaving no raw-data line drops the default but keeps a stated count.
+  const Campaign defaulted = parse_campaign(raw, file);
+  CHECK(defaulted.data_uncertainty.replicates == DataUncertaintySettings::default_replicates);
+  CHECK(DataUncertaintySettings::default_replicates == 200);
+  CHECK(data_uncertainty_samples(defaulted) == 300);  // the campaign's 300 samples (below the cap of 1000)
+  CHECK(parse_campaign(valid, file).data_uncertainty.replicates == 0);
+  CHECK(parse_campaign(raw + "[data_uncertainty]\nreplicates = 0\n", file).data_uncertainty.replicates == 0);
+  Campaign large = defaulted;
+  apply_overrides(large, {.samples = 50000});
+  CHECK(data_uncertainty_samples(large) == 1000);
+  CHECK(data_uncertainty_samples(campaign) == 500);
+  Campaign distributions_only = defaulted;
+  apply_overrides(distributions_only, {.lines = "wt"});
+  CHECK(distributions_only.data_uncertainty.replicates == 0);
+  Campaign stated = parse_campaign(raw + "[data_uncertainty]\nreplicates = 30\n", file);
+  apply_overrides(stated, {.lines = "wt"});
+  CHECK(stated.data_uncertainty.replicates == 30);
 
   const auto error_of = [&](const std::string& text) { return parse_error(text, file); };
   CHECK(error_of(replaced(raw, "raw = lines/raw.ini", "raw = lines/raw.ini\ndistributions = lines/m1.ini")) ==
@@ -138,7 +155,9 @@ TEST_CASE("a line comes from exactly one of a line file and raw data; the data b
   CHECK(error_of(replaced(raw, "lines/raw.ini", "lines/none.ini")).starts_with(file + ":16: raw = 'lines/none.ini': expected an existing file"));
   CHECK(error_of(valid + "[data_uncertainty]\nreplicates = 10\n") ==
         file + ": [data_uncertainty] resamples the tubes of lines given by raw = FILE, and no line is: remove the section or give a line's raw data");
-  CHECK(error_of(raw + "[data_uncertainty]\nsamples = 10\n") == file + ":18: [data_uncertainty] lacks the required key 'replicates'");
+  const Campaign samples_only = parse_campaign(raw + "[data_uncertainty]\nsamples = 10\n", file);
+  CHECK(samples_only.data_uncertainty.replicates == DataUncertaintySettings::default_replicates);
+  CHECK(data_uncertainty_samples(samples_only) == 10);
   CHECK(error_of(raw + "[data_uncertainty]\nreplicates = 10\nsamples = 5\n") ==
         file + ":20: samples = '5': expected a whole number from 10 to 10000000");
 }

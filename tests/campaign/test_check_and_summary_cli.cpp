@@ -58,9 +58,37 @@ TEST_CASE("growthuq check prints the plan and writes nothing") {
   CHECK(check.out.find("estimated peak memory 576.9 MB for one process (") != std::string::npos);
   CHECK(check.out.find("), disk 0.1 MB (") != std::string::npos);
   CHECK(check.out.find("checked: nothing was sampled or written\n") != std::string::npos);
+  CHECK(check.out.find("data uncertainty: none, the intervals will be Monte Carlo only (no line is given by raw data)\n") !=
+        std::string::npos);
   CHECK(entries(scratch.root) == 2);  // stdout.txt and stderr.txt only: no "planned"
   // --samples changes the plan as it changes the run.
   CHECK(run_cli("check " + small + " --out planned --samples 30", scratch.root).out.find("2 lines x 30 samples") != std::string::npos);
+}
+
+TEST_CASE("growthuq check states the data-uncertainty bootstrap a raw-data campaign runs by default, and its cost") {
+  // tests/campaign/data/raw_campaign.ini states 20 replicates x 200 samples; without the section
+  // its raw-data line gets the default, 200 replicates x min(300, 1000) samples.
+  const ScratchDirectory scratch("check_bootstrap");
+  const std::string raw = std::string(GROWTHUQ_SOURCE_DIR) + "/tests/campaign/data/raw_campaign.ini";
+  const CliOutcome stated = run_cli("check " + raw + " --out planned", scratch.root);
+  REQUIRE(stated.exit_code == 0);
+  // 20 x 200 = 4000 samples per line, 4000 / 300 = 13.3 times the run's.
+  CHECK(stated.out.find("data uncertainty: a bootstrap of 20 replicates x 200 samples per line (each refits the raw-data laws): "
+                        "4000 more samples per line, 13.3 times the run's own ([data_uncertainty] replicates = 0 switches it off)\n") !=
+        std::string::npos);
+  std::string text = slurp(raw);
+  const std::string section = "[data_uncertainty]\nreplicates = 20\nsamples = 200\n";
+  REQUIRE(text.find(section) != std::string::npos);
+  text.replace(text.find(section), section.size(), "");
+  // Its relative paths made absolute, so the copy can live in the scratch folder.
+  for (std::size_t at = text.find("../../../"); at != std::string::npos; at = text.find("../../../", at)) {
+    text.replace(at, 9, std::string(GROWTHUQ_SOURCE_DIR) + "/");
+  }
+  spit(scratch.root / "by_default.ini", text);
+  const CliOutcome defaulted = run_cli("check by_default.ini --out planned", scratch.root);
+  REQUIRE(defaulted.exit_code == 0);
+  CHECK(defaulted.out.find("data uncertainty: a bootstrap of 200 replicates x 300 samples per line (each refits the raw-data laws): "
+                           "60000 more samples per line, 200 times the run's own") != std::string::npos);
 }
 
 TEST_CASE("growthuq check fails where the run fails, with the run's message, and writes nothing") {

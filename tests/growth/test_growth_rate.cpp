@@ -236,6 +236,43 @@ TEST_CASE("a kappa calibration takes rates in a display unit, calibrates on them
                        InputError);
 }
 
+TEST_CASE("kappa's Monte Carlo error widens another line's interval of v as the delta method on ln(kappa Q) says") {
+  // Reference rates 1..11 um/s (shuffled, one non-growing sample left out): P = 6. The 95 %
+  // order-statistic CI of a median of 11 is [X(2), X(10)] = [2, 10]: P(B <= 1) = 12/2048 keeps
+  // 98.8 %, P(B <= 2) = 67/2048 would keep 93.5 % (B ~ binomial(11, 1/2)). E = 3 um/s, so kappa =
+  // 0.5 and its interval [E / 10, E / 2] = [0.3, 1.5].
+  KappaCalibration calibration("wild_type", 3e-6);
+  std::vector<double> v{7, 2, 11, 0, 5, 1, 9, 3, 10, 4, 8, 6};
+  std::vector<SampleStatus> status(v.size(), SampleStatus::ok);
+  status[3] = SampleStatus::no_growth;
+  double low = 2.0, high = 10.0;
+  calibration.widen_median_interval(4.0, low, high);  // before calibration: nothing
+  CHECK(low == 2.0);
+  CHECK(high == 10.0);
+  calibration.calibrate(v, 1e-6, status);
+  CHECK(calibration.kappa() == doctest::Approx(0.5).epsilon(1e-14));
+  CHECK(calibration.kappa_ci_low() == doctest::Approx(0.3).epsilon(1e-14));
+  CHECK(calibration.kappa_ci_high() == doctest::Approx(1.5).epsilon(1e-14));
+  // A line with median 4 and Monte Carlo CI [2, 10]: by hand, 4 exp(-sqrt(ln(4/2)^2 + ln(10/6)^2))
+  // = 1.690883 and 4 exp(sqrt(ln(10/4)^2 + ln(6/2)^2)) = 16.724369.
+  calibration.widen_median_interval(4.0, low, high);
+  CHECK(low == doctest::Approx(1.690883047656252).epsilon(1e-12));
+  CHECK(high == doctest::Approx(16.724368660601623).epsilon(1e-12));
+  // An end at 0 (a line whose lower samples do not grow) stays; with a median of 0 only the
+  // upper end widens, by P / P_lo = 3.
+  double zero_low = 0.0, zero_high = 2.0;
+  calibration.widen_median_interval(0.0, zero_low, zero_high);
+  CHECK(zero_low == 0.0);
+  CHECK(zero_high == doctest::Approx(6.0).epsilon(1e-14));
+  // Five growing reference samples reach no 95 % interval: kappa's error is unknown, and so is the line's.
+  KappaCalibration few("wild_type", 3e-6);
+  few.calibrate(std::vector<double>{1, 2, 3, 4, 5}, 1e-6, std::vector<SampleStatus>(5, SampleStatus::ok));
+  double few_low = 2.0, few_high = 10.0;
+  few.widen_median_interval(4.0, few_low, few_high);
+  CHECK(std::isnan(few_low));
+  CHECK(std::isnan(few_high));
+}
+
 TEST_CASE("the growth evaluator declares v valued under no_growth, and nothing else") {
   const GrowthEvaluator growth({.p0 = 1e5, .kappa = 1.0});
   CHECK(growth.valued_statuses("v") == StatusSet{SampleStatus::no_growth});

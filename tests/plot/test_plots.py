@@ -308,13 +308,68 @@ class BoxPlots(unittest.TestCase):
                 key = f"{line}/{quantity}"
                 assert_box(self, self.figure, key, expected, position)
                 label = one(self.figure, f"{key}/n").get_text()
-                self.assertEqual(int(re.match(r"n = (\d+)", label).group(1)), values.size, key)
+                self.assertEqual(int(re.match(r"(\d+) samples", label).group(1)), values.size, key)
+                self.assertNotIn("tubes", label, key)  # lines given by line files: tubes unknown
                 flagged = 200 - values.size
                 self.assertEqual(f"{flagged} flagged" in label, flagged > 0, key)
                 # The same numbers as the engine's summary (summary.csv, /summary in results.h5).
                 row = reference.summary[line, quantity]
                 self.assertEqual(int(row["n"]), values.size)
                 self.assertTrue(close([row[k] for k in expected], list(expected.values())), key)
+
+
+    def test_without_a_bootstrap_no_data_interval_is_drawn_and_the_title_says_so(self):
+        self.assertEqual(gid_artists(self.figure, r".*/data_interval"), [])
+        self.assertIn("no data interval (no bootstrap over tubes)", self.figure._suptitle.get_text())
+
+
+class DataIntervals(unittest.TestCase):
+    """A raw-data campaign (tests/campaign/data/raw_campaign.ini: the synthetic wild type from raw
+    data with a 20-replicate bootstrap, pme48 from its line file): each box carries an error bar
+    on its median spanning the data interval of results.h5's summary, and under the box the
+    samples and, for the raw-data line, the tubes behind its laws (the n of its fits table)."""
+
+    @classmethod
+    def setUpClass(cls):
+        text = (SOURCE / "tests" / "campaign" / "data" / "raw_campaign.ini").read_text()
+        text = text.replace("= ../../../", f"= {SOURCE}/")
+        campaign = Shared.tmp / "raw_campaign.ini"
+        campaign.write_text(text)
+        out = Shared.tmp / "raw"
+        done = run([OPTIONS.cli, "run", campaign, "--out", out, "--quiet"])
+        if done.returncode != 0:
+            raise RuntimeError(f"growthuq run failed: {done.stderr}")
+        cls.reference = Reference(out / "results.h5")
+        with h5py.File(out / "results.h5", "r") as h5:
+            cls.tubes = [int(n) for n in h5["lines/wild_type/fits"]["n"]]
+        cls.figure = PLOTTING.boxes.box_figure(PLOTTING.results.read_results(out / "results.h5"))
+
+    def test_an_error_bar_on_each_median_spans_its_data_interval(self):
+        reference = self.reference
+        for position, line in enumerate(reference.lines):
+            for quantity in EXPECTED_UNITS:
+                key = f"{line}/{quantity}"
+                row = reference.summary[line, quantity]
+                low, high = float(row["data_ci_low"]), float(row["data_ci_high"])
+                self.assertTrue(low < float(row["median"]) < high, key)  # computed, and around the median
+                (segment,) = one(self.figure, f"{key}/data_interval").get_segments()
+                self.assertTrue(close(segment[:, 0], [position, position], 1e-9), key)
+                self.assertTrue(close(sorted(segment[:, 1]), [low, high]), key)
+        legend = one(self.figure, "data_interval_legend")
+        self.assertEqual([t.get_text() for t in legend.get_texts()],
+                         ["median's 95 % data interval (bootstrap over tubes)"])
+        self.assertIn("black bar: the median's 95 % data interval", self.figure._suptitle.get_text())
+        self.assertIn("tubes behind a raw-data line's laws", self.figure._suptitle.get_text())
+
+    def test_the_count_under_a_box_says_samples_and_for_raw_data_the_tubes(self):
+        fewest, most = min(self.tubes), max(self.tubes)
+        self.assertLess(fewest, most)
+        for line in self.reference.lines:
+            for quantity in EXPECTED_UNITS:
+                label = one(self.figure, f"{line}/{quantity}/n").get_text()
+                counted = self.reference.counted(line, quantity).size
+                self.assertTrue(label.startswith(f"{counted} samples"), label)
+                self.assertEqual(f"{fewest}-{most} tubes" in label, line == "wild_type", (line, label))
 
 
 class GrowthRate(unittest.TestCase):
@@ -379,7 +434,7 @@ class YieldPressure(unittest.TestCase):
             ok = int((reference.status[line] == "ok").sum())
             for quantity, n in (("p", ok + no_growth[line]), ("eta", ok + no_growth[line]), ("v", ok + no_growth[line])):
                 label = one(boxes, f"{line}/{quantity}/n").get_text()
-                self.assertEqual(int(re.match(r"n = (\d+)", label).group(1)), n, (line, quantity))
+                self.assertEqual(int(re.match(r"(\d+) samples", label).group(1)), n, (line, quantity))
             v = reference.counted(line, "v")
             self.assertEqual(int((v == 0).sum()), no_growth[line])
             expected = percentiles(v)

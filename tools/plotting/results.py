@@ -1,9 +1,10 @@
 """A campaign's results.h5 (layout: campaigns/README.md, section "results.h5") read into plain
 objects: per line the columns with their quantity, unit and role, the sample statuses, the stored
-analysis and, when present, the relaxation curves. Which samples count follows growthuq's summaries: those
-holding a value of the quantity (every sample for an input; for an output, those whose model computed it,
-whatever flag a later model gave the sample, and v = 0 of no_growth); the correlogram, like the engine's
-analysis, uses status ok only."""
+analysis, the data-uncertainty intervals of its medians and the tubes behind its fitted laws and, when
+present, the relaxation curves. Which samples count follows growthuq's summaries: those holding a value
+of the quantity (every sample for an input; for an output, those whose model computed it, whatever flag
+a later model gave the sample, and v = 0 of no_growth); the correlogram, like the engine's analysis,
+uses status ok only."""
 import configparser
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -42,6 +43,9 @@ class Line:
     status: np.ndarray                     # status name per sample
     analysis: Analysis = None
     relaxation: list = None                # RelaxationCurve, or None without curves
+    data_intervals: dict = field(default_factory=dict)  # quantity: (data_ci_low, data_ci_high)
+    tubes: tuple = None                    # (fewest, most) tubes or curves a law of the line was
+                                           # fitted to (raw-data lines); None for line files
 
     def column(self, quantity):
         return next((column for column in self.columns if column.quantity == quantity), None)
@@ -155,7 +159,31 @@ def _read_line(h5, name, path):
                                  f"{codes.size}, one per sample as in status")
     relaxation = (read_relaxation(group["relaxation"], f"{where}/relaxation")
                   if "relaxation" in group else None)
-    return Line(name, columns, names[codes], analysis, relaxation)
+    return Line(name, columns, names[codes], analysis, relaxation, _data_intervals(group),
+                _tubes(group))
+
+
+def _data_intervals(group):
+    """{quantity: (low, high)} of the line's summary rows with a data-uncertainty interval
+    (data_ci_low/high, finite only where the bootstrap ran)."""
+    if "summary" not in group or "data_ci_low" not in (group["summary"].dtype.names or ()):
+        return {}
+    intervals = {}
+    for row in group["summary"][()]:
+        low, high = float(row["data_ci_low"]), float(row["data_ci_high"])
+        if np.isfinite(low) and np.isfinite(high):
+            quantity = row["quantity"]
+            intervals[quantity.decode() if isinstance(quantity, bytes) else quantity] = (low, high)
+    return intervals
+
+
+def _tubes(group):
+    """The fewest and most tubes (or relaxation curves) behind the line's fitted laws: the n of
+    its fits table, which only raw-data lines have."""
+    if "fits" not in group or "n" not in (group["fits"].dtype.names or ()):
+        return None
+    counts = [int(n) for n in group["fits"]["n"]]
+    return (min(counts), max(counts)) if counts else None
 
 
 def read_results(path):

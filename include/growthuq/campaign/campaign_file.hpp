@@ -42,10 +42,22 @@ struct CampaignLine {
 };
 
 // [data_uncertainty]: a parametric bootstrap over tubes for lines given by raw data
-// (campaign/data_uncertainty.hpp); replicates = 0 (the default) switches it off.
+// (campaign/data_uncertainty.hpp). On by default when a line is given by raw data, with
+// default_data_replicates replicates; replicates = 0 switches it off. A campaign without a
+// raw-data line has none (replicates 0).
 struct DataUncertaintySettings {
-  std::size_t replicates = 0;  // refitted lines per raw line
-  std::size_t samples = 0;     // Latin hypercube samples per line and replicate; 0: the campaign's
+  // Chosen in campaigns/README.md ("Data uncertainty", "Why 200 replicates"): an end of the
+  // interval moves by about 5 % of its width between two bootstraps, for about 1.5 times the
+  // CPU of campaigns/from_raw.ini itself (tools/bench/data-uncertainty-replicates).
+  static constexpr std::size_t default_replicates = 200;
+  // Samples per line and replicate when `samples` is not given: the campaign's, at most this
+  // many (the replicates' Monte Carlo error is then small next to the data's, and a campaign of
+  // 1e6 samples does not run its bootstrap at 1e6 samples a replicate).
+  static constexpr std::size_t default_samples_cap = 1000;
+
+  std::size_t replicates = 0;         // refitted lines per raw line; 0: no bootstrap
+  bool replicates_given = false;      // stated in the file (else the default, or 0 without raw data)
+  std::size_t samples = 0;            // Latin hypercube samples per line and replicate; 0: the default
 };
 
 struct OutputFormats {
@@ -93,7 +105,16 @@ struct CampaignOverrides {
   std::optional<std::string> formats{};  // "csv", "hdf5" or "csv,hdf5"
 };
 
+// --lines leaving no raw-data line also leaves no default bootstrap (a stated replicates stays).
 void apply_overrides(Campaign& campaign, const CampaignOverrides& overrides);
+
+// Whether a line of the campaign is given by raw data (raw = FILE).
+bool has_raw_data_line(const Campaign& campaign);
+
+// The Latin hypercube samples per line and replicate of the data-uncertainty bootstrap:
+// [data_uncertainty] samples, else the campaign's samples capped at
+// DataUncertaintySettings::default_samples_cap.
+std::size_t data_uncertainty_samples(const Campaign& campaign);
 
 // "csv,hdf5" -> formats; InputError naming `location` and `key` otherwise.
 OutputFormats parse_formats(std::string_view text, std::string_view location, std::string_view key);

@@ -1,7 +1,9 @@
 // How much the medians of a campaign move because its raw-data lines were fitted to 20-60
-// tubes: a parametric bootstrap over tubes. The 95 % confidence interval of a median in
-// summary.csv reflects the Monte Carlo error of the campaign's samples only; with laws fitted
-// to a few dozen tubes the data's own uncertainty is usually larger.
+// tubes: a parametric bootstrap over tubes, on by default for a campaign with a raw-data line
+// (campaign_file.hpp, DataUncertaintySettings). The Monte Carlo 95 % CI of a median in
+// summary.csv (median_ci_low/high) reflects the error of the campaign's samples only; with laws
+// fitted to a few dozen tubes the data's own uncertainty is usually larger. Its interval is
+// data_ci_low/high of summary.csv and results.h5.
 //
 // Replicate b (of [data_uncertainty] replicates): every raw-data line's variables are redrawn,
 // n values each (n = the tubes or fitted curves the line has for that variable), from the law

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,10 @@ struct QuantitySummary {
   // Distribution-free 95 % confidence interval of the median from order statistics
   // (binomial(n, 1/2) ranks; exact coverage >= 95 %), e.g. Conover 1999, section 3.2.
   double median_ci_low = 0, median_ci_high = 0;
+  // The data-uncertainty interval of the median (campaign/data_uncertainty.hpp: the 2.5 and
+  // 97.5 % of the bootstrap's replicate medians); NaN where no bootstrap ran.
+  double data_ci_low = std::numeric_limits<double>::quiet_NaN();
+  double data_ci_high = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace growthuq

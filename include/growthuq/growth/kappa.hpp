@@ -51,6 +51,23 @@ class KappaCalibration {
   // m/s per unit (the values are converted to m/s first). InputError as calibrate_kappa.
   void calibrate(std::span<const double> v, double v_to_si, std::span<const SampleStatus> status);
 
+  // A non-reference line's Monte Carlo 95 % CI [low, high] of its median v (kappa applied),
+  // widened by kappa's own Monte Carlo error (Eq. (G5b), src/growth/README.md). kappa = E / P
+  // divides the experimental median E by P, the median of the reference line's samples, which
+  // holds Monte Carlo error: with [P_lo, P_hi] the distribution-free 95 % CI of P (order
+  // statistics, quantity_summary.hpp), ln kappa lies within ln(P_hi / P) below and ln(P / P_lo)
+  // above. The line's median m = kappa Q, Q its own median at kappa = 1, sampled independently of
+  // P, so on the log scale the two half-widths add in quadrature (delta method on the product):
+  //   low' = m exp(-sqrt(ln(m / low)^2 + ln(P_hi / P)^2)),  high' = m exp(sqrt(ln(high / m)^2 + ln(P / P_lo)^2)).
+  // An end at 0 (tubes that do not grow) stays; with m = 0 only high widens, high' = high P / P_lo.
+  // NaN ends stay NaN, and both become NaN when kappa's interval is undefined (5 or fewer
+  // growing reference samples). Nothing before calibrate().
+  void widen_median_interval(double median, double& low, double& high) const;
+
+  // kappa's Monte Carlo 95 % CI (from [P_lo, P_hi] above); NaN before calibrate() or when undefined.
+  double kappa_ci_low() const noexcept { return kappa_ci_low_; }
+  double kappa_ci_high() const noexcept { return kappa_ci_high_; }
+
   // apply_kappa with the calibrated kappa (1 before calibrate()).
   void apply(std::span<double> v, std::span<SampleStatus> status) const { apply_kappa(v, status, kappa_); }
 
@@ -61,6 +78,8 @@ class KappaCalibration {
   std::string reference_line_;
   double experimental_median_ = std::numeric_limits<double>::quiet_NaN();
   double kappa_ = 1.0;
+  double kappa_ci_low_ = std::numeric_limits<double>::quiet_NaN();
+  double kappa_ci_high_ = std::numeric_limits<double>::quiet_NaN();
   bool calibrated_ = false;
 };
 

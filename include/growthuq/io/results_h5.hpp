@@ -12,7 +12,9 @@
 //   /summary                       compound table, one row per line and quantity, the columns of
 //                                  summary.csv: line, quantity, unit (strings), n, n_flagged
 //                                  (uint64), median, q1, q3, iqr, p10, p90, mean, sd,
-//                                  median_ci_low, median_ci_high (float64; NaN where summary.csv
+//                                  median_ci_low, median_ci_high (the Monte Carlo 95 % CI),
+//                                  data_ci_low, data_ci_high (the data-uncertainty interval,
+//                                  NaN where no bootstrap ran) (float64; NaN where summary.csv
 //                                  has an empty cell); dimension summary_row
 //   /lines/<line>/                 one group per line (attributes `samples`, and `columns`: the
 //                                  column names in samples.csv's order, inputs then outputs)
@@ -110,6 +112,11 @@ class ResultsH5Writer {
   // A string or float64 attribute on the group or dataset at `path` (created as a group if missing).
   void write_attribute(const std::string& path, const std::string& name, const std::string& value);
   void write_attribute(const std::string& path, const std::string& name, double value);
+
+  // Replaces the summaries of the lines written (the same rows, in the order written) in every
+  // line's `summary` and for /summary: the data intervals (data_ci_low/high) of the bootstrap
+  // are known only after the last line. std::invalid_argument for other rows.
+  void replace_summaries(const std::vector<QuantitySummary>& summaries);
 
   // Writes /summary and the root attributes, closes the file and renames it to `path`.
   // Calling anything after finish() is a std::logic_error.

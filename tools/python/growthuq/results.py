@@ -24,7 +24,7 @@ class Results:
     path: Path                  # the results.h5 read
     lines: list                 # line names, in campaign order
     samples: pd.DataFrame       # one row per sample: line, sample, each column (unit in its name), status
-    summary: pd.DataFrame       # the rows of summary.csv (line, quantity, unit, n, ..., median_ci_high)
+    summary: pd.DataFrame       # the rows of summary.csv (line, quantity, unit, n, ..., median_ci_high, data_ci_low, data_ci_high)
     correlations: pd.DataFrame  # line, matrix (target, achieved, input_output), row, column, spearman
     fits: pd.DataFrame          # raw-data lines: line and the fits table (chosen law per variable)
     fit_parameters: pd.DataFrame  # raw-data lines: line, variable, unit, family, chosen, parameter, value
