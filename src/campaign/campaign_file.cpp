@@ -303,11 +303,8 @@ Campaign parse_campaign(const std::string& text, const std::string& path) {
       }
     }
   }
-  if (campaign.data_uncertainty.replicates > 0 &&
-      std::none_of(campaign.lines.begin(), campaign.lines.end(), [](const CampaignLine& line) { return !line.raw_path.empty(); })) {
-    throw InputError(path, "[data_uncertainty] resamples the tubes of lines given by raw = FILE, and no line is: remove the "
-                           "section or give a line's raw data");
-  }
+  // [data_uncertainty] without a line it can resample (raw data, or a law stating tubes) is
+  // refused by PreparedCampaign, which reads the line files.
   const bool wants_growth = std::find(campaign.outputs.begin(), campaign.outputs.end(), "v") != campaign.outputs.end();
   if (wants_growth && campaign.reference_line.empty()) {
     throw InputError(path, "output v needs [growth] reference_line: the line whose experimental growth rate calibrates kappa");
