@@ -275,8 +275,15 @@ std::vector<std::string> data_uncertainty_sources(const PreparedCampaign& campai
   const auto listed = [](const std::string& list, const std::string& item) { return list.empty() ? item : list + ", " + item; };
   std::vector<std::string> sources;
   for (const PreparedLine& line : campaign.lines()) {
+    // The sampled variables, and the reference line's v_exp, whose median calibrates kappa.
+    std::vector<LineVariable> variables = line.design_variables.variables;
+    const LineVariable* v_exp = line.distributions.find("v_exp");
+    if (campaign.calibrates_kappa() && line.campaign_line.name == campaign.campaign().reference_line && v_exp != nullptr &&
+        line.design_variables.find("v_exp") == nullptr) {
+      variables.push_back(*v_exp);
+    }
     std::string redrawn, fixed;
-    for (const LineVariable& variable : line.design_variables.variables) {
+    for (const LineVariable& variable : variables) {
       if (line.raw_fit) {
         for (const VariableFit& fit : line.raw_fit->variables) {
           if (fit.variable == variable.name) redrawn = listed(redrawn, variable.name + " (n = " + std::to_string(fit.values.size()) + ")");

@@ -66,7 +66,8 @@ DataUncertaintyResult estimate_data_uncertainty(const PreparedCampaign& campaign
 
 // Which variables of which lines the bootstrap redraws, one text per line in run order, e.g.
 // "pme48 (line file): k (tubes = 21, lognormal refitted within its family); fixed: h, d, d0".
-// Only the variables the campaign samples are named.
+// Only the variables the campaign samples are named, and the reference line's v_exp (it
+// calibrates kappa).
 std::vector<std::string> data_uncertainty_sources(const PreparedCampaign& campaign);
 
 // The same by this process alone, without progress.
