@@ -312,10 +312,9 @@ Campaign parse_campaign(const std::string& text, const std::string& path) {
       }
     }
   }
-  if (campaign.data_uncertainty.replicates > 0 && !has_raw_data_line(campaign)) {
-    throw InputError(path, "[data_uncertainty] resamples the tubes of lines given by raw = FILE, and no line is: remove the "
-                           "section or give a line's raw data");
-  }
+  // [data_uncertainty] without a line it can resample (raw data, or a law stating tubes) is
+  // refused by PreparedCampaign, which reads the line files; the default replicates apply only
+  // when a line is given by raw data.
   apply_default_replicates(campaign);
   const bool wants_growth = std::find(campaign.outputs.begin(), campaign.outputs.end(), "v") != campaign.outputs.end();
   if (wants_growth && campaign.reference_line.empty()) {

@@ -16,6 +16,7 @@
 #include "campaign/design_sharing.hpp"
 #include "campaign/line_schedule.hpp"
 #include "campaign/line_source.hpp"
+#include "campaign/parametric_resample.hpp"
 #include "campaign/shared_raw_fits.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -147,6 +148,19 @@ PreparedCampaign::PreparedCampaign(Campaign campaign, Pool* pool, ProgressMode p
     bool is_input = false;
     for (const PreparedLine& line : lines_) is_input = is_input || line.design_variables.find(output) != nullptr;
     if (!is_input && !contains(computed_outputs_, output)) computed_outputs_.push_back(output);
+  }
+
+  // What a replicate can move: a raw line's fits, the sampled laws stating tubes, and the
+  // reference line's v_exp, whose median calibrates kappa.
+  const auto resampled = [&](const PreparedLine& line) {
+    const LineVariable* v_exp = line.distributions.find("v_exp");
+    const bool calibrating = calibrates_kappa_ && line.campaign_line.name == campaign_.reference_line;
+    return line.raw_fit != nullptr || states_tubes(line.design_variables) || (calibrating && v_exp != nullptr && v_exp->tubes > 0);
+  };
+  if (campaign_.data_uncertainty.replicates > 0 && std::none_of(lines_.begin(), lines_.end(), resampled)) {
+    throw InputError(campaign_.path, "[data_uncertainty] resamples the tubes of lines given by raw = FILE and of line-file "
+                                     "laws that state tubes = N, and no line has either among the variables sampled: remove "
+                                     "the section, give a line's raw data, or state tubes in a line file");
   }
 
   if (calibrates_kappa_) {

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "campaign/chunk_values.hpp"
+#include "campaign/parametric_resample.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/large_vector.hpp"
 #include "growthuq/core/units.hpp"
@@ -27,9 +28,8 @@ namespace {
 LineDistributions refitted_line(const PreparedLine& line, std::uint64_t key) {
   std::vector<VariableFit> refits;
   for (const VariableFit& fit : line.raw_fit->variables) {
-    RandomStream stream(derive_key(key, line.campaign_line.name + "/" + fit.variable));
-    std::vector<double> values(fit.values.size());
-    for (double& value : values) value = quantile(fit.best().distribution, stream.uniform_open());
+    std::vector<double> values =
+        parametric_resample(fit.best().distribution, fit.values.size(), key, line.campaign_line.name, fit.variable);
     refits.push_back(fit_variable_by_aic(fit.variable, *fit.unit, std::move(values), fit.families, fit.source,
                                          "data uncertainty, line " + line.campaign_line.name));
   }
@@ -133,8 +133,10 @@ std::vector<std::vector<QuantitySummary>> replicate_summaries(const PreparedCamp
     std::optional<LineDistributions> refit;
     if (original.raw_fit) {
       refit = refitted_line(original, key);
-      line.design_variables = with_laws(original.design_variables, *refit);
+    } else if (states_tubes(original.distributions)) {
+      refit = resampled_stated_line(original.distributions, original.campaign_line.name, key);
     }
+    if (refit) line.design_variables = with_laws(original.design_variables, *refit);
     ReplicateLine result = evaluate_replicate_line(campaign, line, key, samples);
     if (campaign.calibrates_kappa()) {
       ResultColumn* v = column_of(result, KappaCalibration::quantity);
@@ -266,6 +268,40 @@ DataUncertaintyResult estimate_data_uncertainty(const PreparedCampaign& campaign
   DataUncertaintyResult result;
   on_coordinator(pool, [&] { result = summarize_replicates(campaign, numbers); });
   return result;
+}
+
+std::vector<std::string> data_uncertainty_sources(const PreparedCampaign& campaign) {
+  const auto listed = [](const std::string& list, const std::string& item) { return list.empty() ? item : list + ", " + item; };
+  std::vector<std::string> sources;
+  for (const PreparedLine& line : campaign.lines()) {
+    // The sampled variables, and the reference line's v_exp, whose median calibrates kappa.
+    std::vector<LineVariable> variables = line.design_variables.variables;
+    const LineVariable* v_exp = line.distributions.find("v_exp");
+    if (campaign.calibrates_kappa() && line.campaign_line.name == campaign.campaign().reference_line && v_exp != nullptr &&
+        line.design_variables.find("v_exp") == nullptr) {
+      variables.push_back(*v_exp);
+    }
+    std::string redrawn, fixed;
+    for (const LineVariable& variable : variables) {
+      if (line.raw_fit) {
+        for (const VariableFit& fit : line.raw_fit->variables) {
+          if (fit.variable == variable.name) redrawn = listed(redrawn, variable.name + " (n = " + std::to_string(fit.values.size()) + ")");
+        }
+      } else if (variable.tubes > 0) {
+        redrawn = listed(redrawn, variable.name + " (tubes = " + std::to_string(variable.tubes) + ", " +
+                                      std::string(family_name(variable.distribution)) + ")");
+      } else {
+        fixed = listed(fixed, variable.name);
+      }
+    }
+    std::string text = line.campaign_line.name + (line.raw_fit ? " (raw data): " : " (line file): ");
+    if (!redrawn.empty()) {
+      text += redrawn + (line.raw_fit ? " redrawn and refitted by least AIC" : " redrawn and refitted within their family");
+    }
+    if (!fixed.empty()) text += (redrawn.empty() ? "" : "; ") + std::string("fixed (no tubes stated): ") + fixed;
+    sources.push_back(text);
+  }
+  return sources;
 }
 
 DataUncertaintyResult estimate_data_uncertainty(const PreparedCampaign& campaign) {

@@ -177,8 +177,9 @@ std::vector<ExtraColumn> uncertainty_table(std::span<const DataUncertainty> rows
 
 constexpr const char* method_text =
     "parametric bootstrap over tubes: each replicate redraws every raw-data variable (as many values as the line "
-    "has) from its fitted law, refits it (least AIC), reruns the campaign's models with its own seed and takes the "
-    "median; data_ci_low/high are the 2.5 and 97.5 % quantiles of the replicate medians (percentile interval). It "
+    "has) from its fitted law and refits it (least AIC), redraws every line-file law that states tubes = N (N "
+    "values) and refits it within its family (maximum likelihood), keeps the other laws, reruns the campaign's "
+    "models with its own seed and takes the median; data_ci_low/high are the 2.5 and 97.5 % quantiles of the replicate medians (percentile interval). It "
     "holds the uncertainty from fitting finitely many tubes; median_ci_low/high hold the Monte Carlo error only (for "
     "the v of a line other than the reference line also kappa's).";
 
@@ -254,6 +255,9 @@ std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<c
     const std::vector<ExtraColumn> all = uncertainty_table(uncertainty.rows);
     h5->write_table("data_uncertainty", all);
     h5->write_attribute("data_uncertainty", "method", std::string(method_text));
+    std::string sources;
+    for (const std::string& source : data_uncertainty_sources(campaign)) sources += source + "\n";
+    h5->write_attribute("data_uncertainty", "resampled", sources);
     for (const PreparedLine& line : campaign.lines()) {
       std::vector<DataUncertainty> rows;
       for (const DataUncertainty& row : uncertainty.rows) {
@@ -270,6 +274,8 @@ std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<c
     }
   }
   report += uncertainty_report(uncertainty.rows, c);
+  report += "  redrawn in each replicate (the rest fixed: Monte Carlo error only):\n";
+  for (const std::string& source : data_uncertainty_sources(campaign)) report += "    " + source + "\n";
   for (const std::string& failure : uncertainty.failures) report += "  failed " + failure + "\n";
   return report;
 }

@@ -117,7 +117,7 @@ std::string line_file_text(const FitOptions& options, const std::string& data, c
                         "maximum-likelihood " + std::string(to_string(fit.family)) + " fit to " + data +
                             ", column " + options.column + " (n = " + std::to_string(fit.sample_size) +
                             ", AIC " + number(fit.aic) + ", KS D " + number(fit.ks_statistic) + ")",
-                        "", 0};
+                        "", 0, fit.sample_size};  // tubes: the data interval of a campaign on it
   return "# Written by growthuq fit. Merge the variable section into a plant line's file, or use\n"
          "# this file as it is (it is a complete line file).\n[line]\nname = " +
          (stem.empty() ? std::string("fitted") : stem) + "\ndescription = " + target.variable + " fitted from " + data +

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -14,6 +15,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/distributions/fit.hpp"
 #include "growthuq/distributions/sampled_range.hpp"
 #include "io/ini.hpp"
 #include "io/ini_checks.hpp"
@@ -24,7 +26,10 @@ namespace {
 using detail::required_entry;
 
 constexpr std::array<std::string_view, 7> measured_variables{"k", "h", "d", "d0", "tau", "einf", "v_exp"};
-constexpr std::array<std::string_view, 4> common_keys{"law", "unit", "source", "note"};
+constexpr std::array<std::string_view, 5> common_keys{"law", "unit", "source", "note", "tubes"};
+// More tubes than any lab indents; a larger count is a typo, and the bootstrap draws that many
+// values per replicate.
+constexpr std::uint64_t most_tubes = 100000;
 
 enum class Check { finite, positive, bound };
 
@@ -120,7 +125,7 @@ Distribution make_distribution(const IniDocument& document, const IniSection& se
                                      " (line " + std::to_string(law_entry.line) + "): expected " +
                                      std::string(law.keys_text));
     }
-    throw InputError(location, "unknown key '" + entry.key + "': expected law, unit, source, note or " +
+    throw InputError(location, "unknown key '" + entry.key + "': expected law, unit, source, note, tubes or " +
                                    std::string(law.keys_text));
   }
   std::vector<double> values;
@@ -157,6 +162,23 @@ Distribution make_distribution(const IniDocument& document, const IniSection& se
   } catch (const InputError& error) {
     throw InputError(document.location(section.line), "[" + section.name + "] " + error.what());
   }
+}
+
+// tubes = N (optional): the count behind the law, at least 2 (no law is fitted to fewer), and
+// only for a law whose family the bootstrap can refit by maximum likelihood; 0 when absent.
+std::size_t tubes_of(const IniDocument& document, const IniSection& section, const IniEntry& law_entry) {
+  const IniEntry* entry = section.find("tubes");
+  if (entry == nullptr) return 0;
+  const std::string location = document.location(entry->line);
+  const std::size_t tubes = parse_count(entry->value, location, entry->key, 2, most_tubes);
+  if (!parse_fit_family(law_entry.value)) {
+    throw InputError(location, "tubes = " + entry->value + " with law = " + law_entry.value + " (line " +
+                                   std::to_string(law_entry.line) +
+                                   "): the data-uncertainty bootstrap refits the stated law's family by maximum "
+                                   "likelihood, which exists for lognormal, normal, gamma, weibull and beta only: "
+                                   "expected one of those laws, or no tubes (the law then stays fixed)");
+  }
+  return tubes;
 }
 
 LineVariable read_variable(const IniDocument& document, const IniSection& section) {
@@ -219,7 +241,7 @@ LineVariable read_variable(const IniDocument& document, const IniSection& sectio
                                            ", the " + std::string(quantity.description));
   }
   return LineVariable{section.name, &unit, std::move(distribution), source, note ? note->value : std::string(),
-                      section.line};
+                      section.line, tubes_of(document, section, law_entry)};
 }
 
 }  // namespace
@@ -297,6 +319,7 @@ std::string format_line_variable(const LineVariable& variable) {
   text += "unit = " + std::string(variable.unit ? variable.unit->symbol : "1") + "\n";
   text += "source = " + variable.source + "\n";
   if (!variable.note.empty()) text += "note = " + variable.note + "\n";
+  if (variable.tubes > 0) text += "tubes = " + std::to_string(variable.tubes) + "\n";
   return text;
 }
 

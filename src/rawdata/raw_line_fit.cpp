@@ -165,7 +165,7 @@ LineDistributions line_distributions_of(const RawLineFile& raw, const std::vecto
             " values of " + variable.source + " (least AIC of " + std::to_string(variable.families.size()) +
             " families; KS D " + format_number(best.ks_statistic, "%.3g") + ", AD A^2 " +
             format_number(best.ad_statistic, "%.3g") + ")",
-        "", 0});
+        "", 0, best.sample_size});  // tubes: a line file written from it keeps its data uncertainty
   }
   return line;
 }

@@ -83,6 +83,7 @@ TEST_CASE("growthuq fit prints every family sorted by AIC and writes the best as
   CHECK(line.variables[0].unit->symbol == "N/m");
   CHECK(describe(line.variables[0].distribution) == describe(fits.front().distribution));
   CHECK(quantile(line.variables[0].distribution, 0.9) == quantile(fits.front().distribution, 0.9));
+  CHECK(line.variables[0].tubes == values.size());  // the 40 values fitted, for the data interval
 
   // Never overwritten without --force; --family chooses what is written.
   const Run again = run_fit(data + " --column k_N_per_m --write " + out);

@@ -73,6 +73,8 @@ TEST_CASE("the five shipped line files parse and reproduce the published medians
       // the IQR as a difference of quartiles ~ eps * m / r more (m / r < 50 here).
       if (row.median != none) CHECK(std::fabs(median - row.median) <= 1e-12 * row.median);
       if (row.iqr != none) CHECK(std::fabs(iqr - row.iqr) <= 1e-12 * row.iqr);
+      // The study's only tube count: more than 20 indented tubes per line (stated as 21).
+      CHECK(variable->tubes == (std::string(row.variable) == "k" ? 21U : 0U));
       const bool gap = row.median == none || row.iqr == none;
       CHECK((variable->source == "illustrative") == gap);
       if (gap) CHECK(!variable->note.empty());
@@ -133,7 +135,7 @@ TEST_CASE("line file: a fraction's law must keep every drawn value in [0, 100] %
 
 TEST_CASE("line file: each mistake is one error naming file and line") {
   CHECK(error_of(k_ok) == "no error");
-  CHECK(error_of(k_ok + "color = red\n") == ":9: unknown key 'color': expected law, unit, source, note or median and iqr, or mu and sigma");
+  CHECK(error_of(k_ok + "color = red\n") == ":9: unknown key 'color': expected law, unit, source, note, tubes or median and iqr, or mu and sigma");
   CHECK(error_of(k_ok + "sd = 1\n") == ":9: key 'sd' is not a parameter of law = lognormal (line 4): expected median and iqr, or mu and sigma");
   CHECK(error_of(k_ok + "mu = 1\n") == ":9: key 'mu' is not a parameter of law = lognormal (line 4): expected median and iqr, or mu and sigma");
   CHECK(error_of("[k]\nlaw = lognormal\nmedian = 2.87\niqr = -0.3\nunit = N/m\nsource = s\n") == ":6: iqr = '-0.3': expected a positive number");
@@ -171,6 +173,40 @@ TEST_CASE("line file: each mistake is one error naming file and line") {
   const std::string unknown_header_key = temporary_file("[line]\nname = x\nowner = me\n" + k_ok);
   CHECK_THROWS_WITH_AS(read_line_file(unknown_header_key), (unknown_header_key + ":3: unknown key 'owner' in [line]: expected name or description").c_str(), InputError);
   CHECK_THROWS_AS(read_line_file("/nonexistent/line.ini"), InputError);
+}
+
+TEST_CASE("line file: tubes = N states the count behind a law, a whole number of at least 2, for a refittable law") {
+  // Absent: 0, the law stays fixed in the data-uncertainty bootstrap.
+  const std::string path = temporary_file(header + k_ok + "[h]\nlaw = gamma\nshape = 20\nscale = 7\nunit = nm\nsource = s\ntubes = 34\n"
+                                          "[einf]\nlaw = beta\nalpha = 8\nbeta = 4\nunit = %\nsource = s\ntubes = 2\n"
+                                          "[d]\nlaw = normal\nmean = 6.5\nsd = 1\nunit = um\nsource = s\ntubes = 1e2\n");
+  const LineDistributions line = read_line_file(path);
+  CHECK(line.find("k")->tubes == 0);
+  CHECK(line.find("h")->tubes == 34);
+  CHECK(line.find("einf")->tubes == 2);
+  CHECK(line.find("d")->tubes == 100);
+  // format_line_variable keeps it (and writes none when absent).
+  const LineDistributions again = read_line_file(temporary_file(header + format_line_variable(*line.find("h")) +
+                                                                format_line_variable(*line.find("k"))));
+  CHECK(again.find("h")->tubes == 34);
+  CHECK(again.find("k")->tubes == 0);
+  CHECK(format_line_variable(*line.find("k")).find("tubes") == std::string::npos);
+
+  // Bad values: line 9 is the tubes line after k_ok's six.
+  CHECK(error_of(k_ok + "tubes = 0\n") == ":9: tubes = '0': expected a whole number from 2 to 100000");
+  CHECK(error_of(k_ok + "tubes = 1\n") == ":9: tubes = '1': expected a whole number from 2 to 100000");
+  CHECK(error_of(k_ok + "tubes = -5\n") == ":9: tubes = '-5': expected a whole number from 2 to 100000");
+  CHECK(error_of(k_ok + "tubes = 20.5\n") == ":9: tubes = '20.5': expected a whole number from 2 to 100000");
+  CHECK(error_of(k_ok + "tubes = many\n") == ":9: tubes = 'many': expected a whole number from 2 to 100000");
+  CHECK(error_of(k_ok + "tubes = 1000000\n") == ":9: tubes = '1000000': expected a whole number from 2 to 100000");
+  CHECK(error_of(k_ok + "tubes = 20\ntubes = 30\n").find(":10: ") == 0);  // a key given twice, at its second line
+  // A law without a maximum-likelihood fit cannot be refitted, so it cannot state tubes.
+  CHECK(error_of("[einf]\nlaw = truncated_normal\nmean = 65\nsd = 14\nlower = 0\nupper = 100\nunit = %\nsource = s\ntubes = 34\n") ==
+        ":11: tubes = 34 with law = truncated_normal (line 4): the data-uncertainty bootstrap refits the stated law's family by "
+        "maximum likelihood, which exists for lognormal, normal, gamma, weibull and beta only: expected one of those laws, or no "
+        "tubes (the law then stays fixed)");
+  CHECK(error_of("[k]\nlaw = empirical\nvalues = 1, 2, 3\nunit = N/m\nsource = s\ntubes = 3\n").find(":8: tubes = 3 with law = empirical") == 0);
+  CHECK(error_of("[k]\nlaw = uniform\nlower = 1\nupper = 3\nunit = N/m\nsource = s\ntubes = 3\n").find(":9: tubes = 3 with law = uniform") == 0);
 }
 
 TEST_CASE("a law whose values overflow or underflow where a design draws is refused at its section") {

@@ -167,6 +167,9 @@ TEST_CASE("raw line fit: least AIC, the closed-form lognormal ML, blank cells sk
   const std::string written = folder.write("fitted.ini", fitted_line_file_text(fit));
   const LineDistributions back = read_line_file(written);
   REQUIRE(back.variables.size() == 2);
+  // ... and states the tubes it was fitted to, so a campaign on it has a data interval.
+  CHECK(back.find("k")->tubes == k.values.size());
+  CHECK(back.find("k")->tubes == k.best().sample_size);
   for (const double u : {0.01, 0.25, 0.5, 0.9}) {
     CHECK(quantile(back.find("k")->distribution, u) == doctest::Approx(quantile(variable->distribution, u)).epsilon(1e-14));
     CHECK(quantile(back.find("d")->distribution, u) ==

@@ -8,7 +8,9 @@
 // Replicate b (of [data_uncertainty] replicates): every raw-data line's variables are redrawn,
 // n values each (n = the tubes or fitted curves the line has for that variable), from the law
 // the campaign fitted, and refitted exactly as the campaign did (all candidate families, least
-// AIC); lines given by line files keep their laws. The replicate campaign (same outputs,
+// AIC). A line file's law that states `tubes = N` is redrawn N values and refitted within its
+// own family by maximum likelihood (campaign/parametric_resample.hpp); its laws without `tubes`
+// stay fixed, and so does every law of a line file that states none. The replicate campaign (same outputs,
 // instrument, correlation targets and kappa calibration on the reference line) is sampled with
 // its own seed, counter_bits(derive_key(mix64(seed), "data_uncertainty"), b), at [data_uncertainty]
 // samples per line, and the median of each output is taken as summary.csv takes it. The 2.5 and
@@ -63,6 +65,12 @@ struct DataUncertaintyResult {
 // replicate 120/400, 4 s, about 9 s left") on `log` as `progress` says (none off rank 0).
 DataUncertaintyResult estimate_data_uncertainty(const PreparedCampaign& campaign, Pool& pool, ProgressMode progress,
                                                 std::ostream& log);
+
+// Which variables of which lines the bootstrap redraws, one text per line in run order, e.g.
+// "pme48 (line file): k (tubes = 21, lognormal refitted within its family); fixed: h, d, d0".
+// Only the variables the campaign samples are named, and the reference line's v_exp (it
+// calibrates kappa).
+std::vector<std::string> data_uncertainty_sources(const PreparedCampaign& campaign);
 
 // The same by this process alone, without progress.
 DataUncertaintyResult estimate_data_uncertainty(const PreparedCampaign& campaign);

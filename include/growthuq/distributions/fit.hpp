@@ -24,6 +24,9 @@ inline constexpr FitFamily fraction_fit_families[] = {FitFamily::beta, FitFamily
 
 std::string_view to_string(FitFamily family);
 std::optional<FitFamily> parse_fit_family(std::string_view name);
+// The family whose ML fit gives laws like `distribution` (lognormal, normal, gamma, weibull,
+// beta); nullopt for truncated_normal, uniform and empirical, which have no fit here.
+std::optional<FitFamily> fit_family_of(const Distribution& distribution);
 
 // Lognormal, gamma, Weibull and beta need every value > 0 (beta also below its upper end).
 bool needs_positive_data(FitFamily family);

@@ -3,6 +3,7 @@
 // distributions/README.md and validated strictly; every error names the file and line.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -19,6 +20,10 @@ struct LineVariable {
   std::string source;         // citation, or "illustrative"
   std::string note;           // required when source = illustrative: why this value
   long line = 0;              // line of the section header, for messages
+  // tubes = N: how many tubes the law was fitted to; 0 when the file does not say. A campaign's
+  // data-uncertainty bootstrap redraws N values from the law and refits its family in each
+  // replicate (campaign/stated_law_bootstrap.hpp); a law without it stays fixed there.
+  std::size_t tubes = 0;
 };
 
 struct LineDistributions {

@@ -84,7 +84,8 @@ struct RawLineFit {
 // skipped (a table may hold tubes with some quantities missing).
 RawLineFit fit_raw_line(const RawLineFile& raw, const RawFitSettings& settings);
 
-// The line distributions of a set of variable fits (their chosen laws), named after `raw`.
+// The line distributions of a set of variable fits (their chosen laws), named after `raw`; each
+// law states as tubes the number of values it was fitted to.
 LineDistributions line_distributions_of(const RawLineFile& raw, const std::vector<VariableFit>& variables);
 
 // A readable table of the fits of one line: per variable n, family, parameters, the law's median
