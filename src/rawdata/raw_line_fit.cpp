@@ -238,9 +238,12 @@ std::string format_raw_fit_report(const RawLineFit& fit) {
   if (fit.relaxation) {
     const RelaxationFits& relaxation = *fit.relaxation;
     const std::size_t ok = relaxation.ok_count();
+    std::size_t extrapolated = 0;
+    for (const CurveFit& curve_fit : relaxation.fits) extrapolated += curve_fit.extrapolated ? 1 : 0;
     text += "  relaxation curves: " + std::to_string(relaxation.curves.size()) + ", " + std::to_string(ok) + " fitted (" +
             std::to_string(relaxation.options.terms) + "-term " + (relaxation.options.ramp_aware ? "ramp-aware" : "step") +
-            " fit), " + std::to_string(relaxation.curves.size() - ok) + " fit_failed (left out of tau and einf)\n";
+            " fit; " + std::to_string(extrapolated) + " of them extrapolated: tau_slow beyond the hold), " +
+            std::to_string(relaxation.curves.size() - ok) + " fit_failed (left out of tau and einf)\n";
     double worst_se = 0.0;
     for (const CurveFit& curve_fit : relaxation.fits) {
       if (!curve_fit.ok) {
