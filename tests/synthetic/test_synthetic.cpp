@@ -304,6 +304,7 @@ TEST_CASE("synth: the published 5 s hold: tau_slow beyond the record is fitted, 
     REQUIRE(tau.size() == fit.relaxation->fits.size());
 
     std::vector<double> fitted_tau, fitted_einf;
+    const std::size_t extrapolated_before = extrapolated;
     for (std::size_t c = 0; c < tau.size(); ++c) {
       const CurveFit& curve = fit.relaxation->fits[c];
       CAPTURE(seed);
@@ -327,6 +328,11 @@ TEST_CASE("synth: the published 5 s hold: tau_slow beyond the record is fitted, 
       extrapolated += curve.extrapolated ? 1 : 0;
       covered += curve.tau_slow_low <= tau[c] && tau[c] <= curve.tau_slow_high ? 1 : 0;
     }
+    // The campaign's fit report counts the extrapolated fits and names the widest interval.
+    const std::string report = format_raw_fit_report(fit);
+    CHECK(report.find(std::to_string(fitted_tau.size()) + " fitted (2-term step fit; " +
+                      std::to_string(extrapolated - extrapolated_before) + " of them extrapolated") != std::string::npos);
+    CHECK(report.find("widest 95 % interval of a fitted tau_slow: R") != std::string::npos);
     // The line: the true medians inside the distribution-free 95 % intervals of the median of
     // the curves' fitted values (Conover 1999, section 3.2), as is the fitted law's median.
     std::sort(fitted_tau.begin(), fitted_tau.end());
