@@ -102,7 +102,8 @@ void write_relaxation(ResultsH5Writer& h5, const std::string& line, const RawLin
   // rms is relative (of E_r / E_r(0), or F / F_peak), so a pure number.
   std::vector<ExtraColumn> table{
       {"curve"}, {"status"}, {"reason"}, pure_number("terms"), {.name = "tau_fast_s", .unit = "s"},
-      {.name = "tau_mid_s", .unit = "s"}, {.name = "tau_slow_s", .unit = "s"}, {.name = "einf_frac", .unit = "frac"},
+      {.name = "tau_mid_s", .unit = "s"}, {.name = "tau_slow_s", .unit = "s"}, {.name = "tau_slow_low_s", .unit = "s"},
+      {.name = "tau_slow_high_s", .unit = "s"}, {.name = "einf_frac", .unit = "frac"},
       {.name = "E0_MPa", .unit = "MPa"}, {.name = "eta_MPa_s", .unit = "MPa s"}, {.name = "Er0_MPa", .unit = "MPa"},
       {.name = "tau_slow_se_pct", .unit = "%"}, pure_number("rms"), pure_number("aic"), {.name = "ramp_time_s", .unit = "s"},
       pure_number("points"), {.name = "delta_um", .unit = "um"}, {.name = "p_MPa", .unit = "MPa"},
@@ -115,26 +116,28 @@ void write_relaxation(ResultsH5Writer& h5, const std::string& line, const RawLin
     const bool fitted_ok = f.ok && !f.tau.empty();
     const auto value = [&](bool present, double x) { return present && std::isfinite(x) ? x : nan; };
     table[0].text.push_back(f.curve);
-    table[1].text.emplace_back(f.ok ? "ok" : "fit_failed");
+    table[1].text.emplace_back(fit_status(f));
     table[2].text.push_back(f.reason);
     table[3].integer.push_back(terms);
     table[4].real.push_back(value(fitted_ok && terms > 1, f.tau.empty() ? nan : f.tau.front()));
     table[5].real.push_back(value(fitted_ok && terms == 3, f.tau.size() == 3 ? f.tau[1] : nan));
     table[6].real.push_back(value(fitted_ok, f.tau.empty() ? nan : f.tau.back()));
-    table[7].real.push_back(value(fitted_ok, f.einf));
-    table[8].real.push_back(value(fitted_ok, to_MPa(f.slow_modulus)));
-    table[9].real.push_back(value(fitted_ok, to_MPa_s(f.viscosity)));
-    table[10].real.push_back(value(fitted_ok, to_MPa(f.modulus0)));
-    table[11].real.push_back(value(fitted_ok, to_pct(f.tau_slow_relative_se)));
-    table[12].real.push_back(value(f.points > 0, f.rms));
-    table[13].real.push_back(value(f.points > 0, f.aic));
-    table[14].real.push_back(f.ramp_time);
-    table[15].integer.push_back(static_cast<std::int64_t>(f.points));
-    table[16].real.push_back(to_um(curve.indentation));
-    table[17].real.push_back(to_MPa(curve.turgor));
-    table[18].real.push_back(to_um(curve.diameter));
-    table[19].real.push_back(to_nm(curve.thickness));
-    table[20].real.push_back(to_um(curve.probe_radius_m));
+    table[7].real.push_back(value(fitted_ok, f.tau_slow_low));
+    table[8].real.push_back(value(fitted_ok, f.tau_slow_high));
+    table[9].real.push_back(value(fitted_ok, f.einf));
+    table[10].real.push_back(value(fitted_ok, to_MPa(f.relaxing_modulus)));
+    table[11].real.push_back(value(fitted_ok, to_MPa_s(f.viscosity)));
+    table[12].real.push_back(value(fitted_ok, to_MPa(f.modulus0)));
+    table[13].real.push_back(value(fitted_ok, to_pct(f.tau_slow_relative_se)));
+    table[14].real.push_back(value(f.points > 0, f.rms));
+    table[15].real.push_back(value(f.points > 0, f.aic));
+    table[16].real.push_back(f.ramp_time);
+    table[17].integer.push_back(static_cast<std::int64_t>(f.points));
+    table[18].real.push_back(to_um(curve.indentation));
+    table[19].real.push_back(to_MPa(curve.turgor));
+    table[20].real.push_back(to_um(curve.diameter));
+    table[21].real.push_back(to_nm(curve.thickness));
+    table[22].real.push_back(to_um(curve.probe_radius_m));
     const std::vector<double> model = fitted_force(curve, f, relaxation.options.poisson_ratio);
     for (std::size_t i = 0; i < curve.t.size(); ++i) {
       curve_index.push_back(static_cast<std::int32_t>(c));

@@ -14,8 +14,9 @@
 //                                      family, chosen (int64, 1 for the least-AIC family),
 //                                      parameter, value (distribution.hpp parameter_values)
 //   /lines/<line>/relaxation/fits      one row per curve, the columns of `growthuq relax` (curve,
-//                                      status, reason, terms, tau_fast_s, tau_mid_s, tau_slow_s,
-//                                      einf_frac, E0_MPa, eta_MPa_s, Er0_MPa, tau_slow_se_pct, rms,
+//                                      status (ok, extrapolated, fit_failed), reason, terms,
+//                                      tau_fast_s, tau_mid_s, tau_slow_s, tau_slow_low_s,
+//                                      tau_slow_high_s, einf_frac, E0_MPa, eta_MPa_s, Er0_MPa, tau_slow_se_pct, rms,
 //                                      aic, ramp_time_s, points) and the tube sheet (delta_um,
 //                                      p_MPa, d_um, h_nm, rho_um); group attributes fit ("step" or
 //                                      "ramp_aware"), terms, curves_path

@@ -50,11 +50,12 @@ std::vector<double> curve_fit_numbers(const CurveFit& fit) {
   std::vector<double> numbers;
   put_text(numbers, fit.curve);
   numbers.push_back(fit.ok ? 1.0 : 0.0);
+  numbers.push_back(fit.extrapolated ? 1.0 : 0.0);
   put_text(numbers, fit.reason);
   put_list(numbers, fit.tau);
   put_list(numbers, fit.amplitude);
-  numbers.insert(numbers.end(), {fit.einf, fit.modulus0, fit.slow_modulus, fit.viscosity, fit.tau_slow_relative_se, fit.rms,
-                                 fit.aic, fit.ramp_time, static_cast<double>(fit.points), fit.springs.k_inf});
+  numbers.insert(numbers.end(), {fit.einf, fit.modulus0, fit.relaxing_modulus, fit.viscosity, fit.tau_slow_relative_se,
+                                 fit.tau_slow_low, fit.tau_slow_high, fit.rms, fit.aic, fit.ramp_time, static_cast<double>(fit.points), fit.springs.k_inf});
   put_list(numbers, fit.springs.k);
   put_list(numbers, fit.springs.tau);
   return numbers;
@@ -65,14 +66,17 @@ CurveFit curve_fit_from_numbers(std::span<const double> numbers) {
   CurveFit fit;
   fit.curve = read.text();
   fit.ok = read.number() != 0.0;
+  fit.extrapolated = read.number() != 0.0;
   fit.reason = read.text();
   fit.tau = read.list();
   fit.amplitude = read.list();
   fit.einf = read.number();
   fit.modulus0 = read.number();
-  fit.slow_modulus = read.number();
+  fit.relaxing_modulus = read.number();
   fit.viscosity = read.number();
   fit.tau_slow_relative_se = read.number();
+  fit.tau_slow_low = read.number();
+  fit.tau_slow_high = read.number();
   fit.rms = read.number();
   fit.aic = read.number();
   fit.ramp_time = read.number();

@@ -60,7 +60,8 @@ RelaxOptions parse(const Arguments& arguments, bool& run) {
   po::variables_map values;
   run = parse_arguments(arguments, "relax", "CURVES.csv --out FITS.csv [options]",
                         "Fits a generalized Maxwell (Prony) series to every force-relaxation curve and derives\n"
-                        "tau_slow, E_inf/E_r(0), E0 and the wall viscosity eta = tau_slow E0.",
+                        "tau_slow, E_inf/E_r(0), E0 = (1 - E_inf/E_r(0)) E_r(0) and the wall viscosity\n"
+                        "eta = tau_slow E0.",
                         described, positional, values);
   if (!run) return options;
   const int terms = options.analysis.terms;
@@ -85,15 +86,17 @@ std::string number_or_blank(bool present, double value) {
 }
 
 std::string fits_csv(const std::vector<CurveFit>& fits, int terms) {
-  CsvWriter writer({"curve", "status", "reason", "terms", "tau_fast_s", "tau_mid_s", "tau_slow_s", "einf_frac",
-                    "E0_MPa", "eta_MPa_s", "Er0_MPa", "tau_slow_se_pct", "rms", "aic", "ramp_time_s", "points"});
+  CsvWriter writer({"curve", "status", "reason", "terms", "tau_fast_s", "tau_mid_s", "tau_slow_s", "tau_slow_low_s",
+                    "tau_slow_high_s", "einf_frac", "E0_MPa", "eta_MPa_s", "Er0_MPa", "tau_slow_se_pct", "rms", "aic",
+                    "ramp_time_s", "points"});
   for (const CurveFit& fit : fits) {
     const bool fitted = fit.ok && !fit.tau.empty();
-    writer.add_row({fit.curve, fit.ok ? "ok" : "fit_failed", fit.reason, std::to_string(terms),
+    writer.add_row({fit.curve, std::string(fit_status(fit)), fit.reason, std::to_string(terms),
                     number_or_blank(fitted && terms > 1, fit.tau.empty() ? 0.0 : fit.tau.front()),
                     number_or_blank(fitted && terms == 3, fit.tau.size() == 3 ? fit.tau[1] : 0.0),
                     number_or_blank(fitted, fit.tau.empty() ? 0.0 : fit.tau.back()),
-                    number_or_blank(fitted, fit.einf), number_or_blank(fitted, to_MPa(fit.slow_modulus)),
+                    number_or_blank(fitted, fit.tau_slow_low), number_or_blank(fitted, fit.tau_slow_high),
+                    number_or_blank(fitted, fit.einf), number_or_blank(fitted, to_MPa(fit.relaxing_modulus)),
                     number_or_blank(fitted, to_MPa_s(fit.viscosity)), number_or_blank(fitted, to_MPa(fit.modulus0)),
                     number_or_blank(fitted, to_pct(fit.tau_slow_relative_se)),
                     number_or_blank(fit.points > 0, fit.rms), number_or_blank(fit.points > 0, fit.aic),
@@ -133,7 +136,7 @@ std::string beta_section(const std::vector<double>& einf, const std::string& sou
 std::string distributions_text(const std::vector<CurveFit>& fits, const std::string& curves_path) {
   std::vector<double> tau, einf;
   for (const CurveFit& fit : fits) {
-    if (!fit.ok) continue;
+    if (!fit.ok) continue;  // extrapolated fits are fits (ok): their tau and einf count
     tau.push_back(fit.tau.back());
     einf.push_back(fit.einf);
   }
@@ -150,19 +153,26 @@ std::string distributions_text(const std::vector<CurveFit>& fits, const std::str
 void print_summary(const std::vector<CurveFit>& fits, const RelaxOptions& options, std::ostream& report) {
   report << "growthuq relax: " << fits.size() << " curve(s) from " << options.curves << ", "
             << options.analysis.terms << "-term " << (options.analysis.ramp_aware ? "ramp-aware" : "step") << " fit\n";
-  std::size_t ok = 0;
+  std::size_t ok = 0, extrapolated = 0;
   for (const CurveFit& fit : fits) {
     report << "  " << fit.curve << ": ";
     if (fit.ok) {
-      ++ok;
-      report << "tau_slow " << format_double(std::round(fit.tau.back() * 1e3) / 1e3) << " s, E_inf/E_r(0) "
+      ++(fit.extrapolated ? extrapolated : ok);
+      report << "tau_slow " << format_double(std::round(fit.tau.back() * 1e3) / 1e3) << " s";
+      if (std::isfinite(fit.tau_slow_low)) {
+        report << " [" << format_double(std::round(fit.tau_slow_low * 1e2) / 1e2) << ", "
+               << format_double(std::round(fit.tau_slow_high * 1e2) / 1e2) << "]";
+      }
+      if (fit.extrapolated) report << " (extrapolated: beyond the hold)";
+      report << ", E_inf/E_r(0) "
                 << format_double(std::round(fit.einf * 1e3) / 1e3) << ", eta "
                 << format_double(std::round(to_MPa_s(fit.viscosity) * 10) / 10) << " MPa s\n";
     } else {
       report << "fit_failed: " << fit.reason << "\n";
     }
   }
-  report << ok << " ok, " << fits.size() - ok << " failed; fits in " << (is_standard_output(options.out) ? "standard output" : options.out) << "\n";
+  report << ok << " ok, " << extrapolated << " extrapolated (tau_slow beyond the hold), " << fits.size() - ok - extrapolated
+         << " failed; fits in " << (is_standard_output(options.out) ? "standard output" : options.out) << "\n";
 }
 
 }  // namespace

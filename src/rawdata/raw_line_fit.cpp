@@ -238,18 +238,31 @@ std::string format_raw_fit_report(const RawLineFit& fit) {
   if (fit.relaxation) {
     const RelaxationFits& relaxation = *fit.relaxation;
     const std::size_t ok = relaxation.ok_count();
+    std::size_t extrapolated = 0;
+    for (const CurveFit& curve_fit : relaxation.fits) extrapolated += curve_fit.extrapolated ? 1 : 0;
     text += "  relaxation curves: " + std::to_string(relaxation.curves.size()) + ", " + std::to_string(ok) + " fitted (" +
             std::to_string(relaxation.options.terms) + "-term " + (relaxation.options.ramp_aware ? "ramp-aware" : "step") +
-            " fit), " + std::to_string(relaxation.curves.size() - ok) + " fit_failed (left out of tau and einf)\n";
+            " fit; " + std::to_string(extrapolated) + " of them extrapolated: tau_slow beyond the hold), " +
+            std::to_string(relaxation.curves.size() - ok) + " fit_failed (left out of tau and einf)\n";
     double worst_se = 0.0;
+    const CurveFit* widest = nullptr;  // of the 95 % profile intervals (step fit), by high / low
     for (const CurveFit& curve_fit : relaxation.fits) {
       if (!curve_fit.ok) {
         text += "    " + curve_fit.curve + ": fit_failed: " + curve_fit.reason + "\n";
-      } else {
-        worst_se = std::max(worst_se, curve_fit.tau_slow_relative_se);
+        continue;
       }
+      worst_se = std::max(worst_se, curve_fit.tau_slow_relative_se);
+      const auto width = [](const CurveFit& f) { return f.tau_slow_high / f.tau_slow_low; };
+      if (std::isfinite(width(curve_fit)) && (widest == nullptr || width(curve_fit) > width(*widest))) widest = &curve_fit;
     }
-    if (ok > 0) text += "    largest standard error of a fitted tau_slow: " + format_number(100.0 * worst_se, "%.2g") + " %\n";
+    // An extrapolated tau_slow's linearized standard error means little; its interval says how
+    // well the curve determines it (Eq. (R6b), src/relaxation/README.md).
+    if (widest != nullptr) {
+      text += "    widest 95 % interval of a fitted tau_slow: " + widest->curve + " [" + format_number(widest->tau_slow_low) +
+              ", " + format_number(widest->tau_slow_high) + "] s\n";
+    } else if (ok > 0) {
+      text += "    largest standard error of a fitted tau_slow: " + format_number(100.0 * worst_se, "%.2g") + " %\n";
+    }
   }
   return text;
 }

@@ -9,6 +9,7 @@
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/relaxation/modulus.hpp"
 #include "growthuq/relaxation/prony_fit.hpp"
+#include "growthuq/relaxation/viscosity.hpp"
 
 namespace growthuq {
 namespace {
@@ -22,7 +23,26 @@ double median_interval(std::span<const double> t) {
 
 void fail(CurveFit& result, std::string reason) {
   result.ok = false;
+  result.extrapolated = false;
   result.reason = std::move(reason);
+}
+
+// The taus' search range: from the median sampling interval to longest_tau_in_records hold
+// lengths; a tau_slow at or beyond the hold is extrapolated.
+PronyFitOptions search_options(const RelaxationCurve& curve, const RelaxationOptions& options, std::size_t peak) {
+  PronyFitOptions fit_options;
+  fit_options.terms = options.terms;
+  fit_options.tau_min = median_interval(curve.t);
+  fit_options.record_length = curve.t.back() - curve.t[peak];
+  fit_options.tau_max = longest_tau_in_records * fit_options.record_length;
+  return fit_options;
+}
+
+// E0 and eta by the one definition every path uses (Eq. (R7); relaxation/viscosity.hpp, Eq. (G1)):
+// the modulus that relaxes, E_r(0) - E_inf = (1 - e_inf) E_r(0), times the slow time.
+void derive_viscosity(CurveFit& result) {
+  result.relaxing_modulus = (1.0 - result.einf) * result.modulus0;
+  result.viscosity = relaxation_viscosity(result.tau.back(), result.einf, result.modulus0);
 }
 
 // Step fit: E_r(t) / E_r(0) over the hold as if the indentation had been a step at the force
@@ -47,21 +67,32 @@ void fit_step(const RelaxationCurve& curve, const RelaxationOptions& options, st
                             " s (" + format_double(options.drop_ramp_multiple) + " x ramp time " +
                             format_double(result.ramp_time) + " s): expected at least " + std::to_string(needed));
   }
-  PronyFitOptions fit_options;
-  fit_options.terms = options.terms;
-  fit_options.tau_min = median_interval(curve.t);
-  fit_options.tau_max = curve.t.back() - curve.t[peak];
+  PronyFitOptions fit_options = search_options(curve, options, peak);
+  fit_options.profile_slowest = true;
   const PronyFit fit = fit_prony(t, y, fit_options);
   result.points = fit.points;
   result.tau = fit.tau;
   result.amplitude = fit.amplitude;
   result.einf = fit.einf;
-  result.slow_modulus = fit.amplitude.back() * result.modulus0;
-  result.viscosity = fit.tau.back() * result.slow_modulus;
+  derive_viscosity(result);
   result.rms = fit.rms;
   result.aic = fit.aic;
   result.tau_slow_relative_se = fit.tau_relative_se.back();
-  if (!fit.ok) fail(result, fit.reason);
+  result.tau_slow_low = fit.tau_slow_low;
+  result.tau_slow_high = fit.tau_slow_high;
+  result.extrapolated = fit.extrapolated;
+  if (!fit.ok) return fail(result, fit.reason);
+  // e_inf >= 0 is a constraint of the fit; at 0 it is active, and a slow phase longer than the
+  // record has taken what the record cannot tell from the equilibrium modulus.
+  if (!(fit.einf > 0.0)) {
+    return fail(result, "E_inf/E_r(0) = 0, at its bound: the record does not separate the equilibrium modulus from the "
+                        "slow phase (tau_slow = " + format_double(std::round(fit.tau.back() * 1e3) / 1e3) + " s)");
+  }
+  if (fit.extrapolated) {
+    result.reason = "tau_slow = " + format_double(std::round(fit.tau.back() * 1e3) / 1e3) + " s is beyond the hold of " +
+                    format_double(std::round(fit_options.record_length * 1e3) / 1e3) + " s: extrapolated";
+  }
+  if (!fit.note.empty()) result.reason += (result.reason.empty() ? "" : "; ") + fit.note;
 }
 
 // Ramp-aware fit, in two steps. (1) The simulated ramp (linear from 0 at the first sample to
@@ -74,10 +105,7 @@ void fit_ramp(const RelaxationCurve& curve, const RelaxationOptions& options, st
               const ShellGeometry& shell, CurveFit& result) {
   std::vector<double> t;
   for (double time : curve.t) t.push_back(time - curve.t.front());
-  PronyFitOptions fit_options;
-  fit_options.terms = options.terms;
-  fit_options.tau_min = median_interval(curve.t);
-  fit_options.tau_max = curve.t.back() - curve.t[peak];
+  const PronyFitOptions fit_options = search_options(curve, options, peak);
   // The ramp ends between the samples either side of the force maximum.
   const double before = peak > 0 ? t[peak - 1] : 0.0;
   const double after = peak + 1 < t.size() ? t[peak + 1] : t[peak];
@@ -105,14 +133,19 @@ void fit_ramp(const RelaxationCurve& curve, const RelaxationOptions& options, st
   result.tau = moduli.tau;
   result.amplitude = moduli.amplitude;
   result.einf = moduli.einf;
-  result.slow_modulus = moduli.amplitude.back() * result.modulus0;
-  result.viscosity = moduli.tau.back() * result.slow_modulus;
+  derive_viscosity(result);
   result.tau_slow_relative_se = springs.tau_relative_se.back();
   result.aic = springs.aic;
+  result.extrapolated = moduli.extrapolated;
   if (!moduli.ok) fail(result, "step response in E_r: " + moduli.reason);
 }
 
 }  // namespace
+
+std::string_view fit_status(const CurveFit& fit) {
+  if (!fit.ok) return "fit_failed";
+  return fit.extrapolated ? "extrapolated" : "ok";
+}
 
 CurveFit analyze_relaxation_curve(const RelaxationCurve& curve, const RelaxationOptions& options) {
   CurveFit result;

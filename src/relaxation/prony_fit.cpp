@@ -12,6 +12,7 @@
 #include <limits>
 #include <memory>
 #include <sstream>
+#include <utility>
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -196,6 +197,112 @@ void validate(std::span<const double> t, std::span<const double> y, const PronyF
   }
 }
 
+// The 95 % profile-likelihood interval of the slowest tau (Eq. (R6b)): at each fixed slowest
+// tau the other taus are searched again (the amplitudes by NNLS, as in the fit), and the
+// interval is where the deviance n ln(RSS / RSS_min) stays below chi^2_1(0.95) = 3.84. With a
+// record shorter than tau the slow exponential is nearly a line over the record and the
+// linearized standard error says little (the residual is far from quadratic in ln tau); the
+// profile follows the residual itself, and e_inf >= 0 bounds tau from above when the data do.
+struct SlowInterval {
+  double low = 0.0;
+  double high = 0.0;
+  bool low_found = false;
+  bool high_found = false;
+};
+
+class SlowProfile {
+ public:
+  SlowProfile(const Basis& basis, const Eigen::VectorXd& y, const PronyFitOptions& options, double rss_min)
+      : basis_(basis), y_(y), terms_(static_cast<std::size_t>(options.terms)), log_min_(std::log(options.tau_min)),
+        rss_min_(std::max(rss_min, 1e-300)), n_(static_cast<double>(y.size())) {}
+
+  // Deviance at ln tau_slow = log_slow; `faster` (ln of the other taus) is the warm start and
+  // returns their optimum there, so that a walk along the profile continues from its last step.
+  double deviance(double log_slow, std::vector<double>& faster) const {
+    double rss = 0.0;
+    if (terms_ == 1) {
+      rss = project(basis_({std::exp(log_slow)}, 0.0), y_).rss;
+    } else {
+      const double slow = std::exp(log_slow);
+      const Basis with_slow = [this, slow](const std::vector<double>& tau, double extra) {
+        std::vector<double> all = tau;
+        all.push_back(slow);
+        return basis_(all, extra);
+      };
+      Problem problem{&with_slow, &y_, terms_ - 1, log_min_, log_slow, 1.0 / std::max(y_.squaredNorm(), 1e-300)};
+      // The start strictly inside (log_min, log_slow) and ordered, as z_from needs.
+      const double margin = (log_slow - log_min_) / (2.0 * static_cast<double>(terms_));
+      for (std::size_t i = 0; i < faster.size(); ++i) {
+        const double lowest = log_min_ + margin * static_cast<double>(i + 1);
+        const double highest = log_slow - margin * static_cast<double>(faster.size() - i);
+        faster[i] = std::clamp(faster[i], lowest, highest);
+      }
+      const Minimum minimum = minimize_from(faster, problem);
+      for (std::size_t i = 0; i < faster.size(); ++i) faster[i] = std::log(minimum.tau[i]);
+      rss = minimum.objective / problem.scale;
+    }
+    return n_ * std::log(std::max(rss, 1e-300) / rss_min_);
+  }
+
+ private:
+  const Basis& basis_;
+  const Eigen::VectorXd& y_;
+  std::size_t terms_;
+  double log_min_;
+  double rss_min_;
+  double n_;
+};
+
+constexpr double profile_threshold = 3.841458820694124;  // chi^2 quantile 0.95, 1 degree of freedom
+
+// Walks from the estimate toward `limit` (ln tau) in growing steps until the deviance exceeds
+// the threshold, then bisects to 0.2 % in tau. Returns the crossing, or `limit` not found.
+std::pair<double, bool> profile_end(const SlowProfile& profile, double log_hat, std::vector<double> faster, double limit) {
+  const double direction = limit > log_hat ? 1.0 : -1.0;
+  double inside = log_hat, step = 0.05;
+  std::vector<double> inside_faster = faster;
+  while (direction * (limit - inside) > 1e-9) {
+    const double trial = direction > 0 ? std::min(inside + step, limit) : std::max(inside - step, limit);
+    std::vector<double> trial_faster = inside_faster;
+    if (profile.deviance(trial, trial_faster) > profile_threshold) {
+      double outside = trial;
+      while (std::abs(outside - inside) > 2e-3) {
+        const double middle = 0.5 * (inside + outside);
+        std::vector<double> middle_faster = inside_faster;
+        if (profile.deviance(middle, middle_faster) > profile_threshold) {
+          outside = middle;
+        } else {
+          inside = middle;
+          inside_faster = middle_faster;
+        }
+      }
+      return {0.5 * (inside + outside), true};
+    }
+    inside = trial;
+    inside_faster = trial_faster;
+    step *= 1.5;
+  }
+  return {limit, false};
+}
+
+SlowInterval slow_interval(const Basis& basis, const Eigen::VectorXd& y, const PronyFitOptions& options,
+                           const std::vector<double>& tau, double rss_min) {
+  const SlowProfile profile(basis, y, options, rss_min);
+  std::vector<double> faster;
+  for (std::size_t i = 0; i + 1 < tau.size(); ++i) faster.push_back(std::log(tau[i]));
+  const double log_hat = std::log(tau.back());
+  // Below, the faster taus need room: each at least min_separation from the next.
+  const double lowest = std::log(options.tau_min) + static_cast<double>(faster.size()) * std::log(options.min_separation);
+  SlowInterval interval;
+  const auto [high, high_found] = profile_end(profile, log_hat, faster, std::log(options.tau_max));
+  const auto [low, low_found] = profile_end(profile, log_hat, faster, std::min(lowest, log_hat));
+  interval.high = std::exp(high);
+  interval.high_found = high_found;
+  interval.low = std::exp(low);
+  interval.low_found = low_found;
+  return interval;
+}
+
 // The extra parameter's search interval [min, max]. The projected residual may not depend on it
 // at all up to `flat_end` (the ramp-aware fit's ramp end before the first sample, see
 // fit_ramp_hold): a minimum found there is reported at the middle of [min, min(max, flat_end)],
@@ -261,8 +368,22 @@ PronyFit fit(const Basis& basis, std::span<const double> values, const PronyFitO
     text << std::setprecision(4) << tau_name(terms, i) << " = " << best.tau[i] << " s";
     return text.str();
   };
+  SlowInterval interval;
+  if (options.profile_slowest) {
+    interval = slow_interval(basis, y, options, best.tau, projection.rss);
+    result.tau_slow_low = interval.low;
+    result.tau_slow_high = interval.high;
+  }
   const double lower = options.tau_min * (1.0 + options.bound_margin);
   const double upper = options.tau_max / (1.0 + options.bound_margin);
+  std::ostringstream upper_text;
+  upper_text << std::setprecision(4);
+  if (options.record_length > 0.0) {
+    upper_text << options.tau_max / options.record_length << " x the record length " << options.record_length << " s";
+  } else {
+    upper_text << "record length";
+  }
+  const std::string upper_what = upper_text.str();
   for (std::size_t i = 0; i < best.tau.size() && result.reason.empty(); ++i) {
     if (!(result.amplitude[i] > 0.0)) {
       result.reason = describe_tau(i) + " has zero amplitude: the data hold fewer than " + std::to_string(terms) + " exponentials";
@@ -270,8 +391,10 @@ PronyFit fit(const Basis& basis, std::span<const double> values, const PronyFitO
       result.reason = describe_tau(i) + " is at the lower bound " + format_double(options.tau_min) +
                       " s (sampling interval): faster than the record resolves";
     } else if (best.tau[i] > upper) {
-      result.reason = describe_tau(i) + " is at the upper bound " + format_double(options.tau_max) +
-                      " s (record length): slower than the record resolves";
+      std::ostringstream text;
+      text << std::setprecision(4) << describe_tau(i) << " is at the upper bound " << options.tau_max << " s (" << upper_what
+           << "): slower than the record resolves";
+      result.reason = text.str();
     }
   }
   for (std::size_t i = 0; i + 1 < best.tau.size() && result.reason.empty(); ++i) {
@@ -280,7 +403,24 @@ PronyFit fit(const Basis& basis, std::span<const double> values, const PronyFitO
                       format_double(std::round(to_pct(options.min_separation - 1.0))) + " % of each other: not separable";
     }
   }
+  if (options.profile_slowest && result.reason.empty() && !interval.low_found) {
+    std::ostringstream text;
+    text << std::setprecision(4) << describe_tau(best.tau.size() - 1)
+         << " is not separated from the faster times: its 95 % profile interval [" << interval.low << ", "
+         << interval.high << "] s reaches them";
+    result.reason = text.str();
+  }
+  if (options.profile_slowest && !interval.high_found) {
+    // Not a failure: the record bounds tau_slow from below, and the estimate is the residual's
+    // minimum inside the allowed range; the interval's upper end is that range's limit.
+    std::ostringstream text;
+    text << std::setprecision(4) << "the 95 % profile interval of " << tau_name(terms, best.tau.size() - 1)
+         << " is open above: the record bounds it from below only (" << interval.low << " s), up to the limit "
+         << options.tau_max << " s (" << upper_what << ")";
+    result.note = text.str();
+  }
   for (std::size_t i = 0; i < best.tau.size() && result.reason.empty(); ++i) {
+    if (options.profile_slowest && i + 1 == best.tau.size()) continue;  // its profile interval decides
     if (!(result.tau_relative_se[i] <= options.max_relative_se)) {
       result.reason = describe_tau(i) + " is undetermined by the data (standard error " +
                       (std::isfinite(result.tau_relative_se[i]) ? format_double(std::round(to_pct(result.tau_relative_se[i]))) + " %)"
@@ -289,6 +429,7 @@ PronyFit fit(const Basis& basis, std::span<const double> values, const PronyFitO
   }
   if (result.reason.empty() && !best.converged) result.reason = "the simplex search did not converge";
   result.ok = result.reason.empty();
+  result.extrapolated = result.ok && options.record_length > 0.0 && best.tau.back() >= options.record_length;
   return result;
 }
 

@@ -1,6 +1,8 @@
 """Reads the results of tests/campaign/data/raw_campaign.ini with h5py, as the plotting tools do,
 and checks the raw-data layout of results.h5 (campaign/raw_data_outputs.hpp) against the raw
-files themselves. Usage: check_raw_results.py RESULTS_DIR RAW_DIR. Exits non-zero on a mismatch."""
+files themselves, and the campaign's per-curve eta against `growthuq relax` on the same curves (one
+viscosity, Eq. (R7) of src/relaxation/README.md). Usage: check_raw_results.py RESULTS_DIR RAW_DIR
+RELAX_FITS_CSV. Exits non-zero on a mismatch."""
 import csv
 import sys
 
@@ -22,7 +24,7 @@ def text(value):
     return value.decode() if isinstance(value, bytes) else value
 
 
-results, raw = sys.argv[1], sys.argv[2]
+results, raw, relax_fits = sys.argv[1], sys.argv[2], sys.argv[3]
 with h5py.File(results + "/results.h5", "r") as f:
     wt = f["lines/wild_type"]
     fits = wt["fits"][:]
@@ -73,8 +75,29 @@ with h5py.File(results + "/results.h5", "r") as f:
     for field in ["status", "reason", "tau_fast_s", "tau_slow_s", "einf_frac", "Er0_MPa", "eta_MPa_s", "delta_um", "p_MPa"]:
         expect(field in curve_fits.dtype.names, "relaxation fits field " + field)
     expect(np.allclose(curve_fits["p_MPa"], [float(m["p_MPa"]) for m in meta]), "tube sheet p")
-    fitted = sum(text(s) == "ok" for s in curve_fits["status"])
-    expect(fits[variables.index("tau")]["n"] == fitted, "tau fitted to the ok curves")
+    # ok and extrapolated (tau_slow beyond the hold) are fits; both enter the laws of tau and einf.
+    fitted = sum(text(s) in ("ok", "extrapolated") for s in curve_fits["status"])
+    expect(fits[variables.index("tau")]["n"] == fitted, "tau fitted to the ok and extrapolated curves")
+
+    # One viscosity: the campaign's per-curve eta is relax's on the same curves, and both are
+    # eta = tau_slow (1 - einf) E_r(0), the formula of the campaigns' samples (Eq. (G1)).
+    relax = table(relax_fits)
+    expect([r["curve"] for r in relax] == [text(c) for c in curve_fits["curve"]], "relax fits the same curves")
+    etas = []
+    for row, mine in zip(curve_fits, relax):
+        name = text(row["curve"])
+        expect(text(row["status"]) == mine["status"], "status of " + name)
+        if mine["status"] == "fit_failed":
+            expect(np.isnan(row["eta_MPa_s"]) and mine["eta_MPa_s"] == "", "no eta for failed " + name)
+            continue
+        for field in ["tau_slow_s", "tau_slow_low_s", "tau_slow_high_s", "einf_frac", "Er0_MPa", "E0_MPa", "eta_MPa_s"]:
+            expect(abs(row[field] - float(mine[field])) <= 1e-14 * abs(row[field]), field + " of " + name + " as relax")
+        by_hand = row["tau_slow_s"] * (1.0 - row["einf_frac"]) * row["Er0_MPa"]
+        expect(abs(row["eta_MPa_s"] - by_hand) <= 1e-14 * by_hand, "eta = tau_slow (1 - einf) Er0 for " + name)
+        expect(abs(row["E0_MPa"] - (1.0 - row["einf_frac"]) * row["Er0_MPa"]) <= 1e-14 * row["Er0_MPa"], "E0 of " + name)
+        etas.append(float(mine["eta_MPa_s"]))
+    expect(np.median(etas) == np.nanmedian(curve_fits["eta_MPa_s"]), "median eta over the curves as relax")
+    print("median eta over %d curves: %.6g MPa s (relax and the campaign)" % (len(etas), np.median(etas)))
 
     points = relaxation["points"]
     index, t, force, model = points["curve_index"][:], points["t_s"][:], points["F_uN"][:], points["F_fit_uN"][:]

@@ -201,15 +201,22 @@ TEST_CASE("from_raw: results.h5 holds the fits, the curves with their fitted mod
   CHECK(stdout_text.find("line pme48: distributions fitted") == std::string::npos);
 
   const std::string raw = std::string(GROWTHUQ_SOURCE_DIR) + "/distributions/example_raw/wild_type";
+  // The same curves through `growthuq relax`, whose eta per curve the check compares with the
+  // campaign's (one viscosity, Eq. (R7) of src/relaxation/README.md).
+  const fs::path relax_fits = scratch / "relax_fits.csv";
+  const std::string relax = std::string(GROWTHUQ_CLI) + " relax '" + raw + "/relaxation_curves.csv' --meta '" + raw +
+                            "/relaxation_meta.csv' --rho-um 0.5 --out '" + relax_fits.string() + "' > /dev/null 2>&1";
+  REQUIRE(std::system(relax.c_str()) == 0);
   const std::string script = std::string(GROWTHUQ_SOURCE_DIR) + "/tests/campaign/check_raw_results.py";
-  const std::string check = std::string(python) + " '" + script + "' '" + out.string() + "' '" + raw + "' > '" +
-                            (scratch / "check.txt").string() + "' 2>&1";
+  const std::string check = std::string(python) + " '" + script + "' '" + out.string() + "' '" + raw + "' '" +
+                            relax_fits.string() + "' > '" + (scratch / "check.txt").string() + "' 2>&1";
   const int code = std::system(check.c_str());
   const std::string report = slurp(scratch / "check.txt");
   fs::remove_all(scratch);
   INFO(report);
   CHECK(code == 0);
   CHECK(report.find("raw-data results checked with h5py") != std::string::npos);
+  MESSAGE(report);
 }
 
 TEST_CASE("data uncertainty: replicates = 0 switches the bootstrap off, and the summary says its intervals are Monte Carlo only") {

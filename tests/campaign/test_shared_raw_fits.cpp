@@ -35,14 +35,17 @@ bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
 void require_same_fit(const CurveFit& a, const CurveFit& b) {
   CHECK(a.curve == b.curve);
   CHECK(a.ok == b.ok);
+  CHECK(a.extrapolated == b.extrapolated);
   CHECK(a.reason == b.reason);
   CHECK(same_bits(a.tau, b.tau));
   CHECK(same_bits(a.amplitude, b.amplitude));
   CHECK(same_bits(a.einf, b.einf));
   CHECK(same_bits(a.modulus0, b.modulus0));
-  CHECK(same_bits(a.slow_modulus, b.slow_modulus));
+  CHECK(same_bits(a.relaxing_modulus, b.relaxing_modulus));
   CHECK(same_bits(a.viscosity, b.viscosity));
   CHECK(same_bits(a.tau_slow_relative_se, b.tau_slow_relative_se));
+  CHECK(same_bits(a.tau_slow_low, b.tau_slow_low));
+  CHECK(same_bits(a.tau_slow_high, b.tau_slow_high));
   CHECK(same_bits(a.rms, b.rms));
   CHECK(same_bits(a.aic, b.aic));
   CHECK(same_bits(a.ramp_time, b.ramp_time));

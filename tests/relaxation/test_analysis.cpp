@@ -97,13 +97,13 @@ TEST_CASE("analysis: the ramp-aware fit recovers the exact step response; the st
     CHECK(aware.tau[1] == doctest::Approx(truth.tau[1]).epsilon(1e-3));
     CHECK(aware.einf == doctest::Approx(truth.einf).epsilon(1e-3));
     CHECK(aware.modulus0 == doctest::Approx(true_modulus0).epsilon(1e-3));
-    CHECK(aware.viscosity == doctest::Approx(truth.tau[1] * truth.amplitude[1] * true_modulus0).epsilon(1e-3));
+    CHECK(aware.viscosity == doctest::Approx(truth.tau[1] * (1.0 - truth.einf) * true_modulus0).epsilon(1e-3));
     // The step assumption: the fast mode relaxes during the ramp, so E_r(0) is low and
     // E_inf / E_r(0) high; tau_slow is off by less, because E_r(k) is nonlinear.
     MESSAGE("ramp " << simulated.ramp_end << " s, step fit vs exact step: tau_fast " << step.tau[0] / truth.tau[0] - 1
                     << ", tau_slow " << step.tau[1] / truth.tau[1] - 1 << ", einf " << step.einf / truth.einf - 1
                     << ", E_r(0) " << step.modulus0 / true_modulus0 - 1 << ", eta "
-                    << step.viscosity / (truth.tau[1] * truth.amplitude[1] * true_modulus0) - 1);
+                    << step.viscosity / (truth.tau[1] * (1.0 - truth.einf) * true_modulus0) - 1);
     CHECK(step.einf > truth.einf * (1.0 + 0.3 * simulated.ramp_end));  // biased high, growing with the ramp
     CHECK(step.modulus0 < true_modulus0);
   }
@@ -173,9 +173,15 @@ TEST_CASE("analysis: dropping t < 10 x ramp time removes the fast phase") {
 }
 
 TEST_CASE("analysis: a curve whose force peaks at its end is reported, not fitted") {
-  RelaxationCurve curve = as_curve(simulate_ramp_hold(wall, RampHoldProtocol{}), tube, "simulated");
-  curve.t.resize(30);
-  curve.force.resize(30);  // the ramp only
+  const SimulatedCurve simulated = simulate_ramp_hold(wall, RampHoldProtocol{});
+  RelaxationCurve curve = as_curve(simulated, tube, "simulated");
+  // The ramp only (it ends at 0.17 s, sample 17); 30 samples would leave a 0.13 s hold, which is
+  // fitted now, its tau_slow extrapolated.
+  const auto ramp_samples = static_cast<std::size_t>(
+      std::upper_bound(simulated.t.begin(), simulated.t.end(), simulated.ramp_end) - simulated.t.begin());
+  REQUIRE(ramp_samples >= minimum_curve_samples / 2);
+  curve.t.resize(ramp_samples);
+  curve.force.resize(ramp_samples);
   const CurveFit fit = analyze_relaxation_curve(curve, RelaxationOptions{});
   CHECK_FALSE(fit.ok);
   CHECK(fit.reason.find("hold") != std::string::npos);

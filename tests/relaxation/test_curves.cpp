@@ -12,6 +12,8 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/distributions/fit.hpp"
+#include "growthuq/evaluation/sample_block.hpp"
+#include "growthuq/growth/viscosity.hpp"
 #include "growthuq/io/csv.hpp"
 #include "io/ini.hpp"
 #include "growthuq/relaxation/curves.hpp"
@@ -164,7 +166,7 @@ TEST_CASE("growthuq relax: fits simulated curves, writes fits and distribution e
   CAPTURE(run.err);
   CAPTURE(run.out);
   REQUIRE(run.status == 0);
-  CHECK(run.out.find("3 ok, 0 failed") != std::string::npos);
+  CHECK(run.out.find("3 ok, 0 extrapolated (tau_slow beyond the hold), 0 failed") != std::string::npos);
   const CsvTable fits = read_csv(folder.file("fits.csv"));
   REQUIRE(fits.rows.size() == 3);
   const auto tau = fits.numeric_column("tau_slow_s");
@@ -173,6 +175,23 @@ TEST_CASE("growthuq relax: fits simulated curves, writes fits and distribution e
   CHECK(tau[0] < tau[1]);
   CHECK(tau[1] < tau[2]);
   for (double v : eta) CHECK(v > 0.0);
+  // One viscosity (Eq. (R7), src/relaxation/README.md): each row's eta is what a distribution
+  // campaign's evaluator computes from the row's own tau_slow, einf and E = E_r(0), and E0 is
+  // the relaxing modulus (1 - einf) E_r(0).
+  const auto einf_column = fits.numeric_column("einf_frac");
+  const auto er0 = fits.numeric_column("Er0_MPa");
+  const auto e0 = fits.numeric_column("E0_MPa");
+  SampleBlock block(3);
+  block.set_column("tau", tau);
+  block.set_column("einf", einf_column);
+  std::vector<double> modulus;
+  for (double v : er0) modulus.push_back(v * 1e6);
+  block.set_column("E", modulus);
+  ViscosityEvaluator().evaluate(block);
+  for (std::size_t i = 0; i < 3; ++i) {
+    CHECK(block.column("eta")[i] * 1e-6 == doctest::Approx(eta[i]).epsilon(1e-14));
+    CHECK(e0[i] == doctest::Approx((1.0 - einf_column[i]) * er0[i]).epsilon(1e-14));
+  }
 
   // The distribution entries are the lognormal ML fit of the columns just written.
   const IniDocument ini = read_ini(folder.file("wt.ini"));

@@ -131,6 +131,46 @@ TEST_CASE("prony fit: the reported standard error of tau matches the scatter ove
   CHECK(std::abs(sum / draws) < 3.0 * sd / std::sqrt(draws));  // no bias beyond the scatter
 }
 
+TEST_CASE("prony fit: the profile interval of tau_slow is the linearized one where the residual is quadratic") {
+  // 2 kHz, tau_slow = 3 s well inside the 5 s record: the standard error is ~0.65 %, ln tau is
+  // nearly linear in the data there, and the profile interval (R6b) must match
+  // tau exp(+-1.96 se) (chi^2_1(0.95) = 1.96^2) to a small fraction of its width.
+  const Series s = prony_series(0.5, {0.2, 0.3}, {0.2, 3.0}, 0.0005, 5.0, 0.005, 2);
+  PronyFitOptions options = options_for(s, 2);
+  options.profile_slowest = true;
+  const PronyFit fit = fit_prony(s.t, s.y, options);
+  REQUIRE(fit.ok);
+  CHECK_FALSE(fit.extrapolated);  // record_length not given: nothing is extrapolated
+  const double se = fit.tau_relative_se[1];
+  CHECK(std::log(fit.tau_slow_high / fit.tau[1]) == doctest::Approx(1.959964 * se).epsilon(0.1));
+  CHECK(std::log(fit.tau[1] / fit.tau_slow_low) == doctest::Approx(1.959964 * se).epsilon(0.1));
+}
+
+TEST_CASE("prony fit: a tau_slow beyond the record is extrapolated, its profile interval covers the truth") {
+  // tau_slow = 12 s on a 5 s record (100 Hz, 0.2 % noise), searched up to 10 records: every fit
+  // is ok and extrapolated; over 40 noise draws the 95 % interval covers 12 s in at least 34
+  // (a correct interval fails this with probability 0.3 %, binomial(40, 0.95)).
+  int covered = 0, open_above = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    const Series s = prony_series(0.5, {0.2, 0.3}, {0.3, 12.0}, 0.01, 5.0, 0.002, seed);
+    PronyFitOptions options = options_for(s, 2);
+    options.record_length = s.t.back();
+    options.tau_max = 10.0 * s.t.back();
+    options.profile_slowest = true;
+    const PronyFit fit = fit_prony(s.t, s.y, options);
+    CAPTURE(seed);
+    CAPTURE(fit.reason);
+    REQUIRE(fit.ok);
+    CHECK(fit.extrapolated == (fit.tau[1] >= 5.0));
+    CHECK(fit.tau_slow_low <= fit.tau[1]);
+    CHECK(fit.tau[1] <= fit.tau_slow_high);
+    covered += fit.tau_slow_low <= 12.0 && 12.0 <= fit.tau_slow_high ? 1 : 0;
+    open_above += fit.note.empty() ? 0 : 1;
+  }
+  MESSAGE(covered << " of 40 intervals cover tau_slow = 12 s; " << open_above << " open above");
+  CHECK(covered >= 34);
+}
+
 TEST_CASE("prony fit: AIC prefers the number of terms the data hold") {
   const Series two = prony_series(0.65, {0.15, 0.20}, {0.2, 3.0}, 0.01, 5.0, 0.005, 3);
   const PronyFit one_term = fit_prony(two.t, two.y, options_for(two, 1));

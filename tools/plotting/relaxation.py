@@ -1,5 +1,6 @@
 """Force-relaxation curves with their generalized Maxwell fits, for campaigns built from raw
-curves: one panel per line with relaxation data, a few curves each (fits with status ok first),
+curves: one panel per line with relaxation data, a few curves each (fitted curves first: status ok,
+or extrapolated, a tau_slow beyond the hold),
 measured force as points and the fitted force as a line, on a log time axis (t = 0 at the force
 maximum; points at t <= 0, the ramp, cannot be shown on it)."""
 import math
@@ -11,13 +12,15 @@ from .errors import FigureSkipped
 from .style import line_colors, new_figure, styled
 
 CURVES_PER_LINE = 4
+# Statuses of curves that were fitted; an extrapolated fit has tau_slow beyond the hold.
+FITTED = ("ok", "extrapolated")
 
 
 def chosen_curves(curves, count=CURVES_PER_LINE):
-    """Up to `count` curves with points, those whose fit is ok first, each group in file order."""
+    """Up to `count` curves with points, the fitted ones first, each group in file order."""
     with_points = [curve for curve in curves if curve.t_s.size]
-    ordered = ([curve for curve in with_points if curve.status == "ok"]
-               + [curve for curve in with_points if curve.status != "ok"])
+    ordered = ([curve for curve in with_points if curve.status in FITTED]
+               + [curve for curve in with_points if curve.status not in FITTED])
     return ordered[:count]
 
 
@@ -29,10 +32,11 @@ def _shades(color, count):
 
 
 def _legend_text(curve):
-    if curve.status != "ok":
+    if curve.status not in FITTED:
         return f"{curve.name} ({curve.status})"
     if "tau_fast_s" in curve.fit and "tau_slow_s" in curve.fit:
-        return f"{curve.name} (tau {curve.fit['tau_fast_s']:.2g} s, {curve.fit['tau_slow_s']:.2g} s)"
+        extrapolated = ", extrapolated" if curve.status == "extrapolated" else ""
+        return f"{curve.name} (tau {curve.fit['tau_fast_s']:.2g} s, {curve.fit['tau_slow_s']:.2g} s{extrapolated})"
     return curve.name
 
 
@@ -45,7 +49,7 @@ def _draw_line(ax, line, color):
         fitted = after_maximum & np.isfinite(curve.F_fit_uN)
         ax.plot(curve.t_s[fitted], curve.F_fit_uN[fitted], "-", color=shade, linewidth=1.4,
                 gid=f"{line.name}/{curve.name}/fit", label=_legend_text(curve))
-    ok = sum(curve.status == "ok" for curve in line.relaxation)
+    ok = sum(curve.status in FITTED for curve in line.relaxation)
     ax.set_xscale("log")
     ax.set_xlabel("t (s)")
     ax.set_ylabel("F (uN)")

@@ -3,6 +3,7 @@
 // amplitudes follow from non-negative least squares for every trial set of times.
 #pragma once
 
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -12,7 +13,10 @@ namespace growthuq {
 struct PronyFitOptions {
   int terms = 2;                  // 1, 2 or 3 exponentials
   double tau_min = 0.0;           // lower bound of every tau (s): the sampling interval
-  double tau_max = 0.0;           // upper bound (s): the record length
+  double tau_max = 0.0;           // upper bound (s): the record length, or a multiple of it
+  double record_length = 0.0;     // > 0: a slowest tau at or beyond this (s) is `extrapolated`
+  bool profile_slowest = false;   // 95 % profile-likelihood interval of the slowest tau, which
+                                  // then replaces max_relative_se as its test of being determined
   double min_separation = 1.2;    // tau_{i+1} / tau_i below this: ill-conditioned, fit_failed
   double bound_margin = 0.02;     // a tau within 2 % of a bound counts as "at the bound"
   double max_relative_se = 0.25;  // a tau whose standard error exceeds 25 % is undetermined
@@ -22,10 +26,14 @@ struct PronyFitOptions {
 struct PronyFit {
   bool ok = false;
   std::string reason;              // empty when ok
+  std::string note;                // ok or not: what the fit could not bound (an open interval)
   double einf = 0.0;               // constant term (E_inf / E_r(0) for a normalized curve)
   std::vector<double> tau;         // ordered, fastest first (s)
   std::vector<double> amplitude;   // of each exp(-t / tau_i), same order
   std::vector<double> tau_relative_se;  // linearized standard error of each tau / tau
+  bool extrapolated = false;       // ok, and the slowest tau is at or beyond options.record_length
+  double tau_slow_low = std::numeric_limits<double>::quiet_NaN();   // profile_slowest: the 95 %
+  double tau_slow_high = std::numeric_limits<double>::quiet_NaN();  // interval of the slowest tau (s)
   double rms = 0.0;                // root mean square residual
   double aic = 0.0;                // n ln(RSS / n) + 2 (2 terms + 1), to compare 1, 2, 3 terms
   std::size_t points = 0;
@@ -35,6 +43,10 @@ struct PronyFit {
 // Fits y(t) = einf + sum_i a_i exp(-t / tau_i), einf, a_i >= 0, tau_min <= tau_1 < ... <=
 // tau_max. The ordered, bounded times are reparametrized without constraints (see the .cpp)
 // and the projected residual is minimized by GSL's Nelder-Mead simplex from several starts.
+// profile_slowest: the interval is {tau : n ln(RSS_profile(tau) / RSS_min) <= 3.84}, RSS_profile
+// minimized over the other taus (amplitudes by NNLS) at each fixed slowest tau (Eq. (R6b),
+// src/relaxation/README.md). An interval that reaches the faster taus makes the fit not ok;
+// one that reaches tau_max is open above (tau_slow_high = tau_max, and `note` says so).
 // InputError for inconsistent options or data (sizes, fewer than 2 terms + 2 points, bounds).
 PronyFit fit_prony(std::span<const double> t, std::span<const double> y,
                    const PronyFitOptions& options);
