@@ -1,11 +1,13 @@
 """Box plots per plant line of turgor p, modulus E, viscosity eta and growth rate v (one panel
 per quantity the campaign computed): box q1-q3, line at the median, whiskers 10-90 %, n under
 each box. Samples with a flag are left out and counted under the box; the box statistics are
-the rows of summary.csv."""
+the rows of summary.csv. Above each box, when the campaign compared its lines, their compact
+letters (letters.py): lines sharing a letter are not distinguishable."""
 import math
 
 from .box_drawing import draw_box, label_below, room_for_labels
 from .errors import FigureSkipped
+from .letters import draw_letters, room_for_letters
 from .quantiles import spread_of
 from .style import (LOG_QUANTITIES, axis_label, line_colors, long_name, new_figure,
                     readable_log_axis, styled)
@@ -19,7 +21,7 @@ def flagged_counts(results, quantity):
 
 
 def _draw_quantity(ax, results, quantity, colors):
-    lows, unit, text_lines = [], "", 1
+    lows, unit, text_lines, lettered = [], "", 1, False
     for position, line in enumerate(results.lines):
         column = line.column(quantity)
         if column is None:
@@ -31,6 +33,10 @@ def _draw_quantity(ax, results, quantity, colors):
         if spread.n:
             draw_box(ax, position, spread, colors[line.name], f"{line.name}/{quantity}")
             lows.append(spread.p10)
+            letters = results.letters.get((line.name, quantity))
+            if letters:
+                draw_letters(ax, position, letters, spread.p90, f"{line.name}/{quantity}")
+                lettered = True
         label = f"n = {spread.n}" + (f"\n{flagged} flagged" if flagged else "")
         label_below(ax, position, label, f"{line.name}/{quantity}")
         text_lines = max(text_lines, label.count("\n") + 1)
@@ -38,6 +44,8 @@ def _draw_quantity(ax, results, quantity, colors):
         ax.set_yscale("log")
         readable_log_axis(ax.yaxis)
     room_for_labels(ax, text_lines)
+    if lettered:
+        room_for_letters(ax)
     ax.set_xlim(-0.6, len(results.lines) - 0.4)
     ax.set_xticks(range(len(results.lines)), results.line_names(), rotation=30, ha="right",
                   rotation_mode="anchor")
@@ -64,5 +72,7 @@ def box_figure(results):
         ax.remove()
     figure.suptitle(f"{results.campaign_name}: per line, box q1-q3, line median, whiskers 10-90 %"
                     "\nn: samples with status ok (for v also no_growth, v = 0); flagged samples "
-                    "left out", fontsize=9)
+                    "left out" + ("\nletters: lines sharing a letter are not distinguishable (line "
+                                  "comparisons)" if results.letters else ""),
+                    fontsize=9)
     return figure
