@@ -45,6 +45,12 @@ std::vector<std::string> pair_cells(const QuantityComparisons& q, const PairComp
 
 std::string percent(double fraction) { return significant(100.0 * fraction) + " %"; }
 
+std::string comma_joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
 std::string report(const CampaignComparisons& comparisons) {
   std::size_t line_width = 8;
   for (const QuantityComparisons& q : comparisons.quantities) {
@@ -94,9 +100,7 @@ std::string report(const CampaignComparisons& comparisons) {
     text += trimmed(row);
   }
   if (!comparisons.left_out.empty()) {
-    std::string names;
-    for (const std::string& line : comparisons.left_out) names += (names.empty() ? "" : ", ") + line;
-    text += "not compared: " + names +
+    text += "not compared: " + comma_joined(comparisons.left_out) +
             " (laws from line files: the bootstrap does not redraw them, their replicates vary by Monte Carlo error "
             "only)\n";
   }
@@ -195,8 +199,7 @@ std::string write_line_comparisons(const CampaignComparisons& comparisons, std::
                                    const std::string& directory) {
   if (lines < 2) return {};
   if (comparisons.quantities.empty()) {
-    std::string names;
-    for (const std::string& line : comparisons.left_out) names += (names.empty() ? "" : ", ") + line;
+    const std::string names = comma_joined(comparisons.left_out);
     return "\nline comparisons: not made: they need two lines or more given by raw data (the bootstrap redraws only "
            "their laws" + (names.empty() ? std::string() : "; " + names + " from line files") + ")\n";
   }

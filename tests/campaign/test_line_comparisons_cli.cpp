@@ -17,6 +17,7 @@
 #include "growthuq/io/csv.hpp"
 #include "support/cli_run.hpp"
 #include "support/scratch_directory.hpp"
+#include "support/shared_letter.hpp"
 
 using namespace growthuq;
 using namespace growthuq::testing;
@@ -49,13 +50,6 @@ std::vector<std::string> block(const std::string& text, const std::string& first
   std::istringstream in(text.substr(start + 1));
   for (std::string line; std::getline(in, line) && !line.empty();) lines.push_back(line);
   return lines;
-}
-
-bool share_letter(const std::string& a, const std::string& b) {
-  for (const char c : a) {
-    if (b.find(c) != std::string::npos) return true;
-  }
-  return false;
 }
 
 }  // namespace

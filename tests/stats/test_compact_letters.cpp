@@ -9,19 +9,14 @@
 #include <vector>
 
 #include "growthuq/stats/compact_letters.hpp"
+#include "support/shared_letter.hpp"
 
 using namespace growthuq;
+using growthuq::testing::share_letter;
 
 namespace {
 
 using Pairs = std::vector<std::pair<std::size_t, std::size_t>>;
-
-bool share_letter(const std::string& a, const std::string& b) {
-  for (const char c : a) {
-    if (c != '\'' && b.find(c) != std::string::npos) return true;
-  }
-  return false;
-}
 
 bool differ(const Pairs& pairs, std::size_t i, std::size_t j) {
   for (const auto& [a, b] : pairs) {
