@@ -41,9 +41,13 @@ PairComparison compare_pair(std::size_t a, std::size_t b, std::span<const double
     ratios.push_back(x / y);
   }
   pair.replicates = ratios.size() + not_positive;
-  if (!positive(medians[a]) || !positive(medians[b]) || not_positive > 0) {
-    pair.reason = "a ratio of medians is undefined: a median is 0 or negative" +
-                  (not_positive > 0 ? " in " + std::to_string(not_positive) + " replicates" : std::string());
+  if (not_positive > 0) {
+    pair.reason = "a ratio of medians is undefined: a median is 0 or negative in " + std::to_string(not_positive) +
+                  " replicates";
+    return pair;
+  }
+  if (!positive(medians[a]) || !positive(medians[b])) {
+    pair.reason = "a ratio of medians is undefined: a line's median is missing, 0 or negative";
     return pair;
   }
   pair.ratio = medians[a] / medians[b];

@@ -143,6 +143,13 @@ TEST_CASE("line comparisons: too few replicates, a zero median and missing repli
   CHECK(result.comparisons[0].decision == PairDecision::undetermined);
   CHECK(result.comparisons[0].reason == "a ratio of medians is undefined: a median is 0 or negative in 1 replicates");
   CHECK(std::isnan(result.comparisons[0].ratio));
+
+  // The campaign's own median missing (every sample of the line flagged): no ratio either.
+  lines[0][5] = 1.0;
+  const std::vector<double> no_median{std::numeric_limits<double>::quiet_NaN(), 2.0};
+  result = compare_lines(no_median, lines);
+  CHECK(result.comparisons[0].decision == PairDecision::undetermined);
+  CHECK(result.comparisons[0].reason == "a ratio of medians is undefined: a line's median is missing, 0 or negative");
 }
 
 TEST_CASE("line comparisons: mismatched sizes and alpha outside (0, 1) are programming errors") {
