@@ -12,32 +12,32 @@
 namespace growthuq {
 namespace {
 
-const std::vector<std::string> comparison_columns{
-    "quantity",         "unit",   "line_a",         "line_b",     "ratio", "data_ci_low", "data_ci_high", "adjusted_ci_low",
-    "adjusted_ci_high", "adjusted_level", "replicates", "differs", "note"};
+const std::vector<std::string> comparison_columns{"quantity",        "unit",           "line_a",         "line_b",
+                                                   "ratio",           "data_ci_low",    "data_ci_high",   "adjusted_ci_low",
+                                                   "adjusted_ci_high", "adjusted_level", "replicates",     "differs",
+                                                   "note"};
 
 constexpr const char* method_text =
     "ratio of medians line_a / line_b; data_ci_low/high: 2.5 and 97.5 % quantiles of the ratios of the two lines' "
     "medians in each replicate of the data-uncertainty bootstrap (replicate b of both lines is one replicate "
     "campaign); adjusted_ci_low/high: the Bonferroni-adjusted interval, quantiles alpha/(2m) and 1 - alpha/(2m) for "
     "the m pairs of the quantity, alpha = 0.05 (level adjusted_level = 1 - alpha/m); differs = yes when the adjusted "
-    "interval excludes 1, so the family-wise false-positive rate per quantity is at most 5 %; empty when "
+    "interval excludes 1, so the family-wise false-positive rate per quantity is about 5 %; empty when "
     "undetermined (note says why). Letters: compact letter display (Piepho 2004), lines sharing a letter are not "
     "distinguishable. Never from the Monte Carlo sample count.";
 
-// One pair's cells in the order of comparison_columns, numbers as `number` writes them.
-template <typename Number>
-std::vector<std::string> pair_cells(const QuantityComparisons& q, const PairComparison& pair, Number number) {
+// One pair's cells in the order of comparison_columns.
+std::vector<std::string> pair_cells(const QuantityComparisons& q, const PairComparison& pair) {
   return {q.quantity,
           q.unit,
           q.lines[pair.line_a],
           q.lines[pair.line_b],
-          number(pair.ratio),
-          number(pair.ci_low),
-          number(pair.ci_high),
-          number(pair.adjusted_low),
-          number(pair.adjusted_high),
-          number(q.result.adjusted_level),
+          number_cell(pair.ratio),
+          number_cell(pair.ci_low),
+          number_cell(pair.ci_high),
+          number_cell(pair.adjusted_low),
+          number_cell(pair.adjusted_high),
+          number_cell(q.result.adjusted_level),
           std::to_string(pair.replicates),
           differs_cell(pair.decision),
           pair.reason};
@@ -114,7 +114,7 @@ void write_h5(ResultsH5Writer& h5, const CampaignComparisons& comparisons) {
   for (std::size_t c = 4; c <= 10; ++c) table[c].unit = "1";
   for (const QuantityComparisons& q : comparisons.quantities) {
     for (const PairComparison& pair : q.result.comparisons) {
-      const std::vector<std::string> cells = pair_cells(q, pair, number_cell);
+      const std::vector<std::string> cells = pair_cells(q, pair);
       for (const std::size_t c : {0, 1, 2, 3, 11, 12}) table[c].text.push_back(cells[c]);
       for (const auto& [c, value] : {std::pair{4, pair.ratio}, {5, pair.ci_low}, {6, pair.ci_high}, {7, pair.adjusted_low},
                                      {8, pair.adjusted_high}, {9, q.result.adjusted_level}}) {
@@ -143,9 +143,8 @@ CampaignComparisons compare_campaign_lines(std::span<const DataUncertainty> rows
   std::vector<std::string> quantities;
   for (const DataUncertainty& row : rows) {
     if (std::find(quantities.begin(), quantities.end(), row.quantity) == quantities.end()) quantities.push_back(row.quantity);
-    if (!row.resampled && std::find(comparisons.left_out.begin(), comparisons.left_out.end(), row.line) == comparisons.left_out.end()) {
-      comparisons.left_out.push_back(row.line);
-    }
+    const bool listed = std::find(comparisons.left_out.begin(), comparisons.left_out.end(), row.line) != comparisons.left_out.end();
+    if (!row.resampled && !listed) comparisons.left_out.push_back(row.line);
   }
   for (const std::string& quantity : quantities) {
     QuantityComparisons q;
@@ -163,7 +162,9 @@ CampaignComparisons compare_campaign_lines(std::span<const DataUncertainty> rows
       // Every replicate in its place b (NaN where this line had no median), so that replicate b
       // of two lines is compared with itself.
       std::vector<double> by_replicate(row->replicates + row->failed, std::numeric_limits<double>::quiet_NaN());
-      for (std::size_t i = 0; i < row->replicate_medians.size(); ++i) by_replicate.at(row->replicate_indices.at(i)) = row->replicate_medians[i];
+      for (std::size_t i = 0; i < row->replicate_medians.size(); ++i) {
+        by_replicate.at(row->replicate_indices.at(i)) = row->replicate_medians[i];
+      }
       replicates.push_back(std::move(by_replicate));
     }
     if (q.lines.size() < 2) continue;
@@ -176,7 +177,7 @@ CampaignComparisons compare_campaign_lines(std::span<const DataUncertainty> rows
 std::string comparisons_csv_text(const CampaignComparisons& comparisons) {
   CsvWriter writer(comparison_columns);
   for (const QuantityComparisons& q : comparisons.quantities) {
-    for (const PairComparison& pair : q.result.comparisons) writer.add_row(pair_cells(q, pair, number_cell));
+    for (const PairComparison& pair : q.result.comparisons) writer.add_row(pair_cells(q, pair));
   }
   return writer.text();
 }

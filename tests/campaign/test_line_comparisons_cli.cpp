@@ -2,8 +2,9 @@
 // raw-data lines with a 120-replicate bootstrap run through the CLI. The printed table and
 // comparisons.csv / letters.csv carry the same pairs, numbers and letters; the ratios are those
 // of summary.csv's medians; a pair differs exactly when its adjusted interval excludes 1, and
-// two lines share a letter exactly when they do not differ. Without a bootstrap one line says so
-// and no comparison file is written, and a --force rerun without one removes the old files.
+// two lines share a letter exactly when they do not differ. Without a bootstrap (no raw-data
+// lines, or raw-data lines with replicates = 0) one line says so and no comparison file is
+// written, and a --force rerun without one removes the old files.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -18,6 +19,7 @@
 #include "support/cli_run.hpp"
 #include "support/scratch_directory.hpp"
 #include "support/shared_letter.hpp"
+#include "support/text_file.hpp"
 
 using namespace growthuq;
 using namespace growthuq::testing;
@@ -158,6 +160,21 @@ TEST_CASE("line comparisons: without a bootstrap one line says why, and a --forc
   CHECK(run.out.find("line comparisons (") == std::string::npos);
   CHECK_FALSE(fs::exists(out / "comparisons.csv"));
   CHECK_FALSE(fs::exists(out / "letters.csv"));
+
+  // Raw-data lines without [data_uncertainty] (replicates = 0): the same line, no files.
+  std::string text = slurp(source + "/tests/campaign/data/raw_comparisons.ini");
+  text = text.substr(0, text.find("[data_uncertainty]")) + text.substr(text.find("[line wild_type]"));
+  for (std::size_t at = text.find("../../../distributions"); at != std::string::npos; at = text.find("../../../distributions")) {
+    text.replace(at, std::string("../../../distributions").size(), source + "/distributions");
+  }
+  spit(scratch.root / "no_bootstrap.ini", text);
+  const CliOutcome raw = run_cli("run no_bootstrap.ini --out raw --samples 100 --quiet", scratch.root);
+  INFO(raw.err);
+  REQUIRE(raw.exit_code == 0);
+  CHECK(raw.out.find("\nline comparisons: not made: they need the data interval of a [data_uncertainty] bootstrap") !=
+        std::string::npos);
+  CHECK_FALSE(fs::exists(scratch.root / "raw" / "comparisons.csv"));
+  CHECK_FALSE(fs::exists(scratch.root / "raw" / "letters.csv"));
 
   // One raw-data line and one from a line file: the bootstrap redraws only one.
   const CliOutcome mixed = run_cli("run '" + source + "/tests/campaign/data/raw_campaign.ini' --out mixed --quiet", scratch.root);
