@@ -366,6 +366,16 @@ class Letters(unittest.TestCase):
         self.assertTrue(any("letters: lines sharing a letter are not distinguishable" in t.get_text()
                             for t in self.figure.texts))  # the suptitle
 
+    def test_a_letters_table_without_its_members_is_one_line_naming_it(self):
+        broken = Shared.tmp / "broken-letters"
+        broken.mkdir(exist_ok=True)
+        shutil.copy(self.out / "results.h5", broken)
+        with h5py.File(broken / "results.h5", "a") as h5:
+            del h5["line_letters"]
+            h5["line_letters"] = np.array([(b"wild_type",)], dtype=[("line", "S16")])
+        user_error(self, plot_command(broken, "--figures", "boxes"), broken / "results.h5",
+                   "/line_letters: no member quantity", "expected a table with members quantity, line, letters")
+
     def test_no_letters_without_line_comparisons(self):
         self.assertEqual(Shared.results.letters, {})
         self.assertEqual(gid_artists(PLOTTING.boxes.box_figure(Shared.results), r".*/letters"), [])
