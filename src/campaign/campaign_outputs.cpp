@@ -21,6 +21,7 @@
 #include "campaign/csv_results.hpp"
 #include "campaign/output_lock.hpp"
 #include "growthuq/campaign/data_uncertainty.hpp"
+#include "campaign/line_comparison_outputs.hpp"
 #include "campaign/raw_data_outputs.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/printable.hpp"
@@ -57,7 +58,8 @@ std::string shell_word(const std::string& path) {
 
 // The result files of a run, in the order the commit moves them into the output directory:
 // summary.csv last, so a directory with a summary.csv holds the whole set.
-constexpr std::array<const char*, 4> result_names{results_h5_name, samples_csv_name, data_uncertainty_csv_name, summary_csv_name};
+constexpr std::array<const char*, 6> result_names{results_h5_name,      samples_csv_name, data_uncertainty_csv_name,
+                                                  comparisons_csv_name, letters_csv_name, summary_csv_name};
 
 // Where a run writes its results until they are all complete (output_dir/staging).
 std::string staging_directory(const std::string& output_dir) { return in_directory(output_dir, staging_name); }

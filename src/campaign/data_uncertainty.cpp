@@ -163,13 +163,16 @@ struct LayoutRow {
   std::string line;
   std::string quantity;
   std::string unit;
+  bool resampled = false;
 };
 
 std::vector<LayoutRow> bootstrap_layout(const PreparedCampaign& campaign) {
   std::vector<LayoutRow> rows;
   for (const PreparedLine& line : campaign.lines()) {
     for (const ReplicateOutput& output : replicate_outputs(campaign, line)) {
-      rows.push_back({line.campaign_line.name, output.quantity, std::string(output_unit(line, output).symbol)});
+      // A line file's line is compared only when some law of it states tubes (and so is redrawn).
+      rows.push_back({line.campaign_line.name, output.quantity, std::string(output_unit(line, output).symbol),
+                      line.raw_fit != nullptr || states_tubes(line.distributions)});
     }
   }
   return rows;
@@ -199,6 +202,7 @@ DataUncertaintyResult summarize_replicates(const PreparedCampaign& campaign, con
   const std::vector<LayoutRow> layout = bootstrap_layout(campaign);
   DataUncertaintyResult result;
   std::vector<std::vector<double>> medians(layout.size());  // [row][replicate]
+  std::vector<std::vector<std::size_t>> indices(layout.size());  // [row][replicate]: its b
   std::size_t succeeded = 0;
   for (std::size_t b = 0; b < replicates.size(); ++b) {
     const std::vector<double>& numbers = replicates[b];
@@ -213,7 +217,10 @@ DataUncertaintyResult summarize_replicates(const PreparedCampaign& campaign, con
     if (numbers.size() != layout.size() + 1) throw std::logic_error("a data-uncertainty replicate has the wrong number of medians");
     ++succeeded;
     for (std::size_t r = 0; r < layout.size(); ++r) {
-      if (std::isfinite(numbers[r + 1])) medians[r].push_back(numbers[r + 1]);
+      if (std::isfinite(numbers[r + 1])) {
+        medians[r].push_back(numbers[r + 1]);
+        indices[r].push_back(b);
+      }
     }
   }
   if (succeeded == 0) {
@@ -228,6 +235,8 @@ DataUncertaintyResult summarize_replicates(const PreparedCampaign& campaign, con
     row.samples = samples;
     std::vector<double>& values = medians[r];
     row.replicate_medians = values;
+    row.replicate_indices = indices[r];
+    row.resampled = layout[r].resampled;
     row.replicates = values.size();
     row.failed = replicates.size() - values.size();
     if (values.size() >= 2) {

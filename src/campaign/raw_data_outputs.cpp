@@ -1,4 +1,6 @@
 #include "campaign/raw_data_outputs.hpp"
+#include "campaign/line_comparison_outputs.hpp"
+#include "campaign/report_text.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -17,19 +19,6 @@ namespace growthuq {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-
-std::string cell(double value) { return std::isfinite(value) ? format_double(value) : std::string(); }
-
-std::string significant(double value) {
-  if (!std::isfinite(value)) return "-";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", value);
-  return text;
-}
-
-std::string padded(const std::string& text, std::size_t width) {
-  return text.size() >= width ? text + " " : text + std::string(width - text.size(), ' ');
-}
 
 // A numeric column of pure numbers (counts, likelihoods, test statistics).
 ExtraColumn pure_number(const std::string& name) { return ExtraColumn{.name = name, .unit = "1"}; }
@@ -222,9 +211,9 @@ std::string data_uncertainty_csv_text(std::span<const DataUncertainty> rows) {
   CsvWriter writer({"line", "quantity", "unit", "median", "median_ci_low", "median_ci_high", "data_ci_low",
                     "data_ci_high", "data_sd", "replicates", "failed_replicates", "samples_per_replicate"});
   for (const DataUncertainty& row : rows) {
-    writer.add_row({row.line, row.quantity, row.unit, cell(row.median), cell(row.median_ci_low), cell(row.median_ci_high),
-                    cell(row.low), cell(row.high), cell(row.sd), std::to_string(row.replicates),
-                    std::to_string(row.failed), std::to_string(row.samples)});
+    writer.add_row({row.line, row.quantity, row.unit, number_cell(row.median), number_cell(row.median_ci_low),
+                    number_cell(row.median_ci_high), number_cell(row.low), number_cell(row.high), number_cell(row.sd),
+                    std::to_string(row.replicates), std::to_string(row.failed), std::to_string(row.samples)});
   }
   return writer.text();
 }
@@ -243,7 +232,10 @@ std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<c
   }
 
   const std::string csv_path = (std::filesystem::path(directory) / data_uncertainty_csv_name).string();
-  if (uncertainty.rows.empty()) return report;  // (the commit removes a stale one of a --force rerun)
+  if (uncertainty.rows.empty()) {  // (the commit removes a stale one of a --force rerun)
+    if (c.lines.size() >= 2) report += comparisons_need_data_interval();
+    return report;
+  }
   for (DataUncertainty& row : uncertainty.rows) {
     for (const QuantitySummary& summary : summaries) {
       if (summary.line == row.line && summary.quantity == row.quantity) {
@@ -280,6 +272,9 @@ std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<c
   report += "  redrawn in each replicate (the rest fixed: Monte Carlo error only):\n";
   for (const std::string& source : data_uncertainty_sources(campaign)) report += "    " + source + "\n";
   for (const std::string& failure : uncertainty.failures) report += "  failed " + failure + "\n";
+  std::vector<std::string> line_order;
+  for (const CampaignLine& line : c.lines) line_order.push_back(line.name);
+  report += write_line_comparisons(compare_campaign_lines(uncertainty.rows, line_order), c.lines.size(), h5, directory);
   return report;
 }
 

@@ -1,7 +1,8 @@
 // The outputs a campaign adds for lines given by raw data (raw = FILE) once its lines are done:
 // the fit report on stdout, the fits, the curves and their fitted models in results.h5, and the
 // data-uncertainty bootstrap (data_uncertainty.hpp) as data_uncertainty.csv, in results.h5 and
-// on stdout. Nothing for a campaign without raw-data lines.
+// on stdout, followed by the line comparisons on that bootstrap (line_comparison_outputs.hpp).
+// Without a bootstrap: only the line saying comparisons need it (for two lines or more).
 //
 // results.h5 (in addition to the campaign layout; NaN for undefined numbers):
 //   /lines/<line>/fits                 one row per variable: variable, unit, family, parameters
@@ -33,6 +34,9 @@
 //   /lines/<line>/data_uncertainty_replicates/<quantity>   float64, the successful replicates'
 //                                      medians (attributes unit and units, dimension replicate),
 //                                      for plots and other intervals
+//   /line_comparisons, /line_letters   the line comparisons on the bootstrap
+//                                      (line_comparison_outputs.hpp), with comparisons.csv and
+//                                      letters.csv
 // Every table has the attribute column_units (ExtraColumn::unit of each member).
 #pragma once
 
@@ -49,7 +53,7 @@ namespace growthuq {
 inline constexpr const char* data_uncertainty_csv_name = "data_uncertainty.csv";
 
 // Writes what is above (h5 may be null: no results.h5 this run; data_uncertainty.csv goes to
-// `directory`, where the run stages its results) and returns the report text for stdout (empty without raw lines).
+// `directory`, where the run stages its results) and returns the report text for stdout.
 // `summaries` are the campaign's rows of summary.csv, `uncertainty` the bootstrap's result
 // (estimate_data_uncertainty; no rows when the campaign has none).
 std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<const QuantitySummary> summaries,

@@ -1,5 +1,6 @@
 # Runs a test campaign once without MPI and once under `mpirun -np PROCESSES`, and requires
-# samples.csv, summary.csv and (for raw-data lines with a bootstrap) data_uncertainty.csv to be
+# samples.csv, summary.csv and (for raw-data lines with a bootstrap) data_uncertainty.csv and
+# the line comparisons' comparisons.csv and letters.csv to be
 # identical byte for byte, and results.h5 value for value (its analyses and raw-data fits are
 # computed by all processes together; the command line stored in it names another --out, so its
 # bytes differ), when /usr/bin/python3 has h5py: results must not depend on the number of
@@ -24,9 +25,11 @@ if(NOT mpi_result EQUAL 0)
   message(FATAL_ERROR "run under mpirun -np ${PROCESSES} failed (${mpi_result}): ${mpi_error}")
 endif()
 set(compared samples.csv summary.csv)
-if(EXISTS "${WORK}/serial/data_uncertainty.csv")
-  list(APPEND compared data_uncertainty.csv)
-endif()
+foreach(optional data_uncertainty.csv comparisons.csv letters.csv)
+  if(EXISTS "${WORK}/serial/${optional}")
+    list(APPEND compared ${optional})
+  endif()
+endforeach()
 foreach(name ${compared})
   execute_process(COMMAND "${CMAKE_COMMAND}" -E compare_files "${WORK}/serial/${name}" "${WORK}/mpi/${name}"
                   RESULT_VARIABLE differs)

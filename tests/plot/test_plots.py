@@ -27,6 +27,7 @@ from pathlib import Path
 
 import h5py
 import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.image import imread
 from matplotlib.legend import Legend
 from scipy.stats import spearmanr
@@ -87,6 +88,10 @@ class Reference:
         """growthuq's summary rule: the samples holding a value (NaN: the sample lacks it)."""
         values = self.columns[line, self.dataset(line, quantity)]
         return values[np.isfinite(values)]
+
+
+def as_text(value):
+    return value.decode() if isinstance(value, bytes) else str(value)
 
 
 def percentiles(values):
@@ -370,6 +375,94 @@ class DataIntervals(unittest.TestCase):
                 counted = self.reference.counted(line, quantity).size
                 self.assertTrue(label.startswith(f"{counted} samples"), label)
                 self.assertEqual(f"{fewest}-{most} tubes" in label, line == "wild_type", (line, label))
+
+
+class Letters(unittest.TestCase):
+    """The compact letters of the line comparisons, over each box (tools/plotting/letters.py): a
+    campaign of three raw-data lines with a 120-replicate bootstrap
+    (tests/campaign/data/raw_comparisons.ini), its letters read back against letters.csv, and
+    its results.h5 tables against the CSV files and against the intervals recomputed here with
+    numpy from the stored replicate medians."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.out = Shared.tmp / "comparisons"
+        campaign = SOURCE / "tests" / "campaign" / "data" / "raw_comparisons.ini"
+        done = run([OPTIONS.cli, "run", campaign, "--out", cls.out, "--quiet"])
+        if done.returncode != 0:
+            raise RuntimeError(f"growthuq run failed: {done.stderr}")
+        cls.results = PLOTTING.results.read_results(cls.out / "results.h5")
+        cls.figure = PLOTTING.boxes.box_figure(cls.results)
+        FigureCanvasAgg(cls.figure)
+        cls.figure.draw_without_rendering()  # the constrained layout, so extents are final
+        with open(cls.out / "letters.csv", newline="") as handle:
+            cls.letters = {(r["line"], r["quantity"]): r["letters"] for r in csv.DictReader(handle)}
+        with open(cls.out / "comparisons.csv", newline="") as handle:
+            cls.pairs = list(csv.DictReader(handle))
+
+    def test_each_box_carries_its_letters_just_above_its_upper_whisker(self):
+        reference = Reference(self.out / "results.h5")
+        self.assertEqual(len(self.letters), 3 * 4)
+        for (line, quantity), letters in self.letters.items():
+            key = f"{line}/{quantity}"
+            text = one(self.figure, f"{key}/letters")
+            self.assertEqual(text.get_text(), letters, key)
+            p90 = np.percentile(reference.counted(line, quantity), 90)
+            x, y = text.get_position()
+            self.assertTrue(close([x, y], [reference.lines.index(line), p90]), key)
+            ax = text.axes
+            whisker_top = ax.transData.transform((x, p90))[1]
+            extent = text.get_window_extent()
+            self.assertGreater(extent.y0, whisker_top, key)             # above the whisker
+            self.assertLessEqual(extent.y1, ax.get_window_extent().y1, key)  # inside the panel
+        self.assertTrue(any("letters: lines sharing a letter are not distinguishable" in t.get_text()
+                            for t in self.figure.texts))  # the suptitle
+
+    def test_a_letters_table_without_its_members_is_one_line_naming_it(self):
+        broken = Shared.tmp / "broken-letters"
+        broken.mkdir(exist_ok=True)
+        shutil.copy(self.out / "results.h5", broken)
+        with h5py.File(broken / "results.h5", "a") as h5:
+            del h5["line_letters"]
+            h5["line_letters"] = np.array([(b"wild_type",)], dtype=[("line", "S16")])
+        user_error(self, plot_command(broken, "--figures", "boxes"), broken / "results.h5",
+                   "/line_letters: no member quantity", "expected a table with members quantity, line, letters")
+
+    def test_no_letters_without_line_comparisons(self):
+        self.assertEqual(Shared.results.letters, {})
+        self.assertEqual(gid_artists(PLOTTING.boxes.box_figure(Shared.results), r".*/letters"), [])
+
+    def test_results_h5_tables_equal_the_csv_files_and_numpy_percentiles_of_the_replicates(self):
+        with h5py.File(self.out / "results.h5", "r") as h5:
+            table = h5["line_comparisons"][()]
+            self.assertIn("Bonferroni", str(h5["line_comparisons"].attrs["method"]))
+            stored_letters = {(as_text(r["line"]), as_text(r["quantity"])): as_text(r["letters"])
+                              for r in h5["line_letters"][()]}
+            replicates = {(line, q): h5[f"lines/{line}/data_uncertainty_replicates/{q}"][()]
+                          for line in ("wild_type", "xeg113", "pme48") for q in EXPECTED_UNITS}
+        self.assertEqual(stored_letters, self.letters)
+        self.assertEqual(len(table), len(self.pairs))
+        checked = 0
+        for row, csv_row in zip(table, self.pairs):
+            for name in ("quantity", "unit", "line_a", "line_b", "differs", "note"):
+                self.assertEqual(as_text(row[name]), csv_row[name], name)
+            for name in ("ratio", "data_ci_low", "data_ci_high", "adjusted_ci_low", "adjusted_ci_high",
+                         "adjusted_level"):
+                self.assertEqual(float(row[name]), float(csv_row[name]), name)  # exact round trip
+            self.assertEqual(int(row["replicates"]), int(csv_row["replicates"]))
+            a = replicates[csv_row["line_a"], csv_row["quantity"]]
+            b = replicates[csv_row["line_b"], csv_row["quantity"]]
+            if a.size != 120 or b.size != 120:
+                continue  # a replicate without a median: the arrays no longer pair by position
+            tail = 100 * 0.05 / 6  # Bonferroni over 3 pairs, two-sided
+            # Hyndman and Fan type 6, order statistic (B + 1) p: numpy's "weibull" method
+            expected = np.percentile(a / b, [2.5, 97.5, tail, 100 - tail], method="weibull")
+            drawn = [float(csv_row[n]) for n in ("data_ci_low", "data_ci_high", "adjusted_ci_low", "adjusted_ci_high")]
+            self.assertTrue(close(drawn, expected, 1e-12), (csv_row, expected))
+            excludes_one = expected[2] > 1 or expected[3] < 1
+            self.assertEqual(csv_row["differs"], "yes" if excludes_one else "no")
+            checked += 1
+        self.assertGreaterEqual(checked, 9)
 
 
 class GrowthRate(unittest.TestCase):

@@ -2,14 +2,17 @@
 per quantity the campaign computed): box q1-q3, line at the median, whiskers 10-90 %, and where
 the data-uncertainty bootstrap ran a black error bar on the median spanning its 95 % data
 interval (data_ci_low/high of summary.csv). Under each box what it counts: the samples, and for
-a raw-data line the tubes its laws were fitted to. Samples that lack the quantity (flagged before it was computed) are left out and counted
-under the box; the box statistics are the rows of summary.csv."""
+a raw-data line the tubes its laws were fitted to. Samples that lack the quantity (flagged before
+it was computed) are left out and counted under the box; the box statistics are the rows of
+summary.csv. Above each box, when the campaign compared its lines, their compact letters
+(letters.py): lines sharing a letter are not distinguishable."""
 import math
 
 from matplotlib.lines import Line2D
 
 from .box_drawing import draw_box, label_below, room_for_labels
 from .errors import FigureSkipped
+from .letters import draw_letters, room_for_letters
 from .quantiles import spread_of
 from .style import (LOG_QUANTITIES, axis_label, line_colors, long_name, new_figure,
                     readable_log_axis, styled)
@@ -45,7 +48,7 @@ def _draw_data_interval(ax, position, median, interval, key):
 
 
 def _draw_quantity(ax, results, quantity, colors):
-    lows, unit, text_lines, intervals = [], "", 1, 0
+    lows, unit, text_lines, intervals, lettered = [], "", 1, 0, False
     for position, line in enumerate(results.lines):
         column = line.column(quantity)
         if column is None:
@@ -62,6 +65,10 @@ def _draw_quantity(ax, results, quantity, colors):
                 _draw_data_interval(ax, position, spread.median, interval, f"{line.name}/{quantity}")
                 lows.append(interval[0])
                 intervals += 1
+            letters = results.letters.get((line.name, quantity))
+            if letters:
+                draw_letters(ax, position, letters, spread.p90, f"{line.name}/{quantity}")
+                lettered = True
         label = count_label(spread.n, flagged, line.tubes)
         label_below(ax, position, label, f"{line.name}/{quantity}")
         text_lines = max(text_lines, label.count("\n") + 1)
@@ -69,6 +76,8 @@ def _draw_quantity(ax, results, quantity, colors):
         ax.set_yscale("log")
         readable_log_axis(ax.yaxis)
     room_for_labels(ax, text_lines)
+    if lettered:
+        room_for_letters(ax)
     ax.set_xlim(-0.6, len(results.lines) - 0.4)
     ax.set_xticks(range(len(results.lines)), results.line_names(), rotation=30, ha="right",
                   rotation_mode="anchor")
@@ -104,5 +113,7 @@ def box_figure(results):
                  else "no data interval (no bootstrap over tubes)")
     figure.suptitle(f"{results.campaign_name}: box q1-q3, line median, whiskers 10-90 %\n{intervals}"
                     "\nunder each box: Monte Carlo samples holding a value (v = 0 for no_growth counts),"
-                    "\ntubes behind a raw-data line's laws; flagged: samples lacking it, left out", fontsize=9)
+                    "\ntubes behind a raw-data line's laws; flagged: samples lacking it, left out"
+                    + ("\nletters: lines sharing a letter are not distinguishable (line comparisons)"
+                       if results.letters else ""), fontsize=9)
     return figure

@@ -14,6 +14,7 @@ import numpy as np
 
 from .errors import PlotInputError
 from .h5text import text_attribute, text_list
+from .letters import read_letters
 from .relaxation_data import read_relaxation
 
 COLUMN_ATTRIBUTES = ("quantity", "unit", "role")
@@ -69,6 +70,7 @@ class Results:
     kappa: float                 # NaN when the campaign has no growth output
     samples_per_line: int
     lines: list = field(default_factory=list)
+    letters: dict = field(default_factory=dict)  # {(line, quantity): compact letters}, letters.py
 
     def line_names(self):
         return [line.name for line in self.lines]
@@ -208,6 +210,7 @@ def read_results(path):
         results = Results(path, campaign_name or path.parent.name, reference_line, kappa, samples)
         for name in _line_order(h5):
             results.lines.append(_read_line(h5, name, path))
+        results.letters = read_letters(h5, path)
     if not results.lines:
         raise PlotInputError(f"{path}:/lines: no line groups (expected one group per plant line)")
     return results

@@ -44,6 +44,11 @@ struct DataUncertainty {
   double high = std::numeric_limits<double>::quiet_NaN();  // 97.5 %
   double sd = std::numeric_limits<double>::quiet_NaN();    // standard deviation of the replicate medians
   std::vector<double> replicate_medians;                   // of the successful replicates, in order
+  std::vector<std::size_t> replicate_indices;              // b of each of them: replicate b of two
+                                                           // lines is one replicate campaign
+  // Whether the line's laws were redrawn in each replicate (a raw-data line); false: its
+  // replicate medians vary by Monte Carlo error only, and line comparisons leave it out.
+  bool resampled = false;
   // The campaign's own median and its Monte Carlo 95 % CI (summary.csv), next to the interval
   // for reports; filled by the outputs (raw_data_outputs.hpp), NaN until then.
   double median = std::numeric_limits<double>::quiet_NaN();
