@@ -170,9 +170,10 @@ std::vector<LayoutRow> bootstrap_layout(const PreparedCampaign& campaign) {
   std::vector<LayoutRow> rows;
   for (const PreparedLine& line : campaign.lines()) {
     for (const ReplicateOutput& output : replicate_outputs(campaign, line)) {
-      // A line file's line is compared only when some law of it states tubes (and so is redrawn).
+      // Only raw-data lines are compared: a line file's laws are fixed, or redrawn only where they
+      // state tubes (the shipped ones for k alone), so its interval is a lower bound.
       rows.push_back({line.campaign_line.name, output.quantity, std::string(output_unit(line, output).symbol),
-                      line.raw_fit != nullptr || states_tubes(line.distributions)});
+                      line.raw_fit != nullptr});
     }
   }
   return rows;

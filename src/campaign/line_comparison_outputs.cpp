@@ -101,8 +101,8 @@ std::string report(const CampaignComparisons& comparisons) {
   }
   if (!comparisons.left_out.empty()) {
     text += "not compared: " + comma_joined(comparisons.left_out) +
-            " (laws from line files: the bootstrap does not redraw them, their replicates vary by Monte Carlo error "
-            "only)\n";
+            " (laws from line files: the bootstrap keeps them, or redraws only those that state tubes, so their "
+            "intervals are lower bounds)\n";
   }
   return text;
 }
@@ -201,8 +201,8 @@ std::string write_line_comparisons(const CampaignComparisons& comparisons, std::
   if (lines < 2) return {};
   if (comparisons.quantities.empty()) {
     const std::string names = comma_joined(comparisons.left_out);
-    return "\nline comparisons: not made: they need two lines or more given by raw data (the bootstrap redraws only "
-           "their laws" + (names.empty() ? std::string() : "; " + names + " from line files") + ")\n";
+    return "\nline comparisons: not made: they need two lines or more given by raw data (only their laws are "
+           "all redrawn" + (names.empty() ? std::string() : "; " + names + " from line files") + ")\n";
   }
   namespace fs = std::filesystem;
   write_file_atomically((fs::path(directory) / comparisons_csv_name).string(), comparisons_csv_text(comparisons), Overwrite::allow);

@@ -161,9 +161,10 @@ TEST_CASE("line comparisons: without a bootstrap one line says why, and a --forc
   CHECK_FALSE(fs::exists(out / "comparisons.csv"));
   CHECK_FALSE(fs::exists(out / "letters.csv"));
 
-  // Raw-data lines without [data_uncertainty] (replicates = 0): the same line, no files.
+  // Raw-data lines with the bootstrap switched off (replicates = 0): the same line, no files.
   std::string text = slurp(source + "/tests/campaign/data/raw_comparisons.ini");
-  text = text.substr(0, text.find("[data_uncertainty]")) + text.substr(text.find("[line wild_type]"));
+  text = text.substr(0, text.find("[data_uncertainty]")) + "[data_uncertainty]\nreplicates = 0\n\n" +
+         text.substr(text.find("[line wild_type]"));
   for (std::size_t at = text.find("../../../distributions"); at != std::string::npos; at = text.find("../../../distributions")) {
     text.replace(at, std::string("../../../distributions").size(), source + "/distributions");
   }
@@ -179,7 +180,7 @@ TEST_CASE("line comparisons: without a bootstrap one line says why, and a --forc
   // One raw-data line and one from a line file: the bootstrap redraws only one.
   const CliOutcome mixed = run_cli("run '" + source + "/tests/campaign/data/raw_campaign.ini' --out mixed --quiet", scratch.root);
   REQUIRE(mixed.exit_code == 0);
-  CHECK(mixed.out.find("\nline comparisons: not made: they need two lines or more given by raw data (the bootstrap "
-                       "redraws only their laws; pme48 from line files)\n") != std::string::npos);
+  CHECK(mixed.out.find("\nline comparisons: not made: they need two lines or more given by raw data (only their laws "
+                       "are all redrawn; pme48 from line files)\n") != std::string::npos);
   CHECK_FALSE(fs::exists(scratch.root / "mixed" / "comparisons.csv"));
 }
