@@ -99,6 +99,27 @@ CsvTable parse_table(const std::string& text) {
   return table;
 }
 
+// A synthetic line drawn by `settings` from `truth`, written to a scratch folder, fitted by the
+// raw-data path a campaign runs (fit_raw_line), with the per-curve truth synth wrote beside it.
+struct FittedSynthLine {
+  RawLineFit fit;
+  CsvTable relaxation_truth;
+};
+
+FittedSynthLine fit_synthesized_line(const LineDistributions& truth, const SynthSettings& settings, const std::string& tag) {
+  const auto files = synthesize_line(truth, settings, "test");
+  const fs::path folder = fs::temp_directory_path() / ("growthuq_test_" + tag + "_" + std::to_string(::getpid()));
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  for (const SynthFile& file : files) std::ofstream(folder / file.name) << file.text;
+  RawFitSettings fit_settings;
+  fit_settings.instrument.probe_radius_m = settings.instrument.probe_radius_m;
+  FittedSynthLine line{fit_raw_line(read_raw_line_file((folder / "raw.ini").string()), fit_settings),
+                       read_csv((folder / "relaxation_truth.csv").string())};
+  fs::remove_all(folder);
+  return line;
+}
+
 }  // namespace
 
 TEST_CASE("synthetic tube: the step stiffness is the forward image of the stated E_r(t)") {
@@ -231,20 +252,12 @@ TEST_CASE("synth: the raw data set reads back as a raw line, its curves fit to t
   const LineDistributions truth = truth_of("wild_type");
   SynthSettings settings;
   settings.seed = 11;
-  const auto files = synthesize_line(truth, settings, "test");
-  const fs::path folder = fs::temp_directory_path() / ("growthuq_test_synth_" + std::to_string(::getpid()));
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  for (const SynthFile& file : files) std::ofstream(folder / file.name) << file.text;
-
-  RawFitSettings fit_settings;
-  fit_settings.instrument.probe_radius_m = settings.instrument.probe_radius_m;
-  const RawLineFit fit = fit_raw_line(read_raw_line_file((folder / "raw.ini").string()), fit_settings);
+  const FittedSynthLine line = fit_synthesized_line(truth, settings, "synth");
+  const RawLineFit& fit = line.fit;
   CHECK(fit.raw.name == "wild_type");
   CHECK(fit.raw.variables() == std::vector<std::string>{"k", "d", "d0", "h", "v_exp", "tau", "einf"});
   REQUIRE(fit.relaxation.has_value());
-  const CsvTable truth_table = read_csv((folder / "relaxation_truth.csv").string());
-  fs::remove_all(folder);
+  const CsvTable& truth_table = line.relaxation_truth;
   const std::vector<double> tau = truth_table.numeric_column("tau_slow_s");
   const std::vector<double> einf = truth_table.numeric_column("einf_frac");
   REQUIRE(tau.size() == fit.relaxation->fits.size());
@@ -289,16 +302,9 @@ TEST_CASE("synth: the published 5 s hold: tau_slow beyond the record is fitted, 
     settings.seed = seed;
     settings.curves = {40, 40};
     settings.protocol.hold = 5.0;
-    const auto files = synthesize_line(truth, settings, "test");
-    const fs::path folder = fs::temp_directory_path() / ("growthuq_test_short_hold_" + std::to_string(::getpid()));
-    fs::remove_all(folder);
-    fs::create_directories(folder);
-    for (const SynthFile& file : files) std::ofstream(folder / file.name) << file.text;
-    RawFitSettings fit_settings;
-    fit_settings.instrument.probe_radius_m = settings.instrument.probe_radius_m;
-    const RawLineFit fit = fit_raw_line(read_raw_line_file((folder / "raw.ini").string()), fit_settings);
-    const CsvTable truth_table = read_csv((folder / "relaxation_truth.csv").string());
-    fs::remove_all(folder);
+    const FittedSynthLine line = fit_synthesized_line(truth, settings, "short_hold");
+    const RawLineFit& fit = line.fit;
+    const CsvTable& truth_table = line.relaxation_truth;
     REQUIRE(fit.relaxation.has_value());
     const std::vector<double> tau = truth_table.numeric_column("tau_slow_s");
     REQUIRE(tau.size() == fit.relaxation->fits.size());
