@@ -2,6 +2,7 @@
 // the flags, every line, matrix and raw-data file, the raw-data fits, the models each line
 // needs, the output directory, the memory and disk the run will take on this machine), then
 // the plan on stdout. Nothing is sampled and nothing is written.
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <optional>
@@ -70,8 +71,12 @@ void print_plan(const PreparedCampaign& prepared, const RunFootprint& footprint,
               << "\n    samples " << (variables.empty() ? std::string("nothing") : joined(variables)) << "; "
               << correlation_text(line) << "\n    models " << (models.empty() ? std::string("none") : joined(models)) << "\n";
   }
+  const auto raw_lines = std::count_if(prepared.lines().begin(), prepared.lines().end(),
+                                       [](const PreparedLine& line) { return !line.campaign_line.raw_path.empty(); });
+  const bool bootstrap = c.data_uncertainty.replicates > 0;
   std::cout << "\nresults in " << c.output_dir << ": summary.csv" << (c.formats.csv ? ", samples.csv" : "")
-            << (c.formats.hdf5 ? ", results.h5" : "") << "\n"
+            << (c.formats.hdf5 ? ", results.h5" : "") << (bootstrap ? ", data_uncertainty.csv" : "")
+            << (bootstrap && raw_lines >= 2 ? ", comparisons.csv, letters.csv" : "") << "\n"
             << "estimated peak memory " << readable_size(footprint.memory_bytes) << " for one process ("
             << (room.memory_bytes ? readable_size(*room.memory_bytes) + " available" : std::string("available memory unknown"))
             << "), disk " << readable_size(footprint.disk_bytes) << " ("

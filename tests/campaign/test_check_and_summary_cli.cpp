@@ -76,6 +76,12 @@ TEST_CASE("growthuq check states the data-uncertainty bootstrap a raw-data campa
   CHECK(stated.out.find("data uncertainty: a bootstrap of 20 replicates x 200 samples per line (each refits the raw-data laws): "
                         "4000 more samples per line, 13.3 times the run's own ([data_uncertainty] replicates = 0 switches it off)\n") !=
         std::string::npos);
+  // One raw-data line: the bootstrap's table, but no line comparisons (they need two).
+  CHECK(stated.out.find("results in planned: summary.csv, samples.csv, results.h5, data_uncertainty.csv\n") != std::string::npos);
+  const CliOutcome three = run_cli("check " + std::string(GROWTHUQ_SOURCE_DIR) + "/tests/campaign/data/raw_comparisons.ini --out planned",
+                                   scratch.root);
+  REQUIRE(three.exit_code == 0);
+  CHECK(three.out.find(", data_uncertainty.csv, comparisons.csv, letters.csv\n") != std::string::npos);
   std::string text = slurp(raw);
   const std::string section = "[data_uncertainty]\nreplicates = 20\nsamples = 200\n";
   REQUIRE(text.find(section) != std::string::npos);
