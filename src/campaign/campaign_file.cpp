@@ -139,9 +139,48 @@ void read_campaign_section(const IniDocument& document, const IniSection& sectio
     }
   }
   if (const IniEntry* fidelity = reader.optional("fidelity")) {
-    if (fidelity->value != "thin_shell") throw_bad_value(reader.location(*fidelity), fidelity->key, fidelity->value, "thin_shell (the only model today)");
+    campaign.fidelity = parse_fidelity(fidelity->value, reader.location(*fidelity), fidelity->key);
   }
   reader.reject_unknown_keys("name, seed, samples, outputs, output_dir, formats, chunk_size, stratum_position, fidelity");
+}
+
+bool parse_on_off(const SectionReader& reader, const IniEntry& entry) {
+  if (entry.value == "on") return true;
+  if (entry.value == "off") return false;
+  throw_bad_value(reader.location(entry), entry.key, entry.value, "on or off");
+}
+
+// [shell_fe]: the finite-element model's options (growthuq/fe/indentation.hpp), the keys of
+// `growthuq indent`'s flags; a campaign's model is always the capped tube.
+void read_shell_fe_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
+  SectionReader reader(document, section);
+  ShellFeOptions& options = campaign.shell_fe;
+  if (const IniEntry* law = reader.optional("law")) options.law = parse_shell_fe_law(law->value, reader.location(*law), law->key);
+  if (const IniEntry* mesh = reader.optional("mesh")) options.mesh = parse_shell_fe_mesh(mesh->value, reader.location(*mesh), mesh->key);
+  if (const IniEntry* substrate = reader.optional("substrate")) options.substrate = parse_on_off(reader, *substrate);
+  if (const IniEntry* bending = reader.optional("bending")) options.bending = parse_on_off(reader, *bending);
+  if (const IniEntry* half = reader.optional("half_model")) options.half_model = parse_on_off(reader, *half);
+  if (const IniEntry* length = reader.optional("tube_length_um")) {
+    options.tube_length = reader.number(*length, 5.0, 1e6, "a tube length in [5, 1e6] um (default 100)") * 1e-6;
+  }
+  if (const IniEntry* distance = reader.optional("probe_distance_um")) {
+    options.probe_distance = reader.number(*distance, 0.0, 1e6, "the probe's distance behind the apex in [0, tube_length) um (default 10)") * 1e-6;
+  }
+  if (const IniEntry* window = reader.optional("force_window_uN")) {
+    const std::size_t comma = window->value.find(',');
+    const auto low = comma == std::string::npos ? std::nullopt : try_parse_double(trim(std::string_view(window->value).substr(0, comma)));
+    const auto high = comma == std::string::npos ? std::nullopt : try_parse_double(trim(std::string_view(window->value).substr(comma + 1)));
+    if (!low || !high || !(*low >= 0.0) || !(*high > *low) || !std::isfinite(*high)) {
+      throw_bad_value(reader.location(*window), window->key, window->value, "two forces 'LOW,HIGH' in uN with 0 <= LOW < HIGH (default 0.4,4)");
+    }
+    options.force_window = {*low * 1e-6, *high * 1e-6};
+  }
+  if (const IniEntry* chunk = reader.optional("chunk_size")) {
+    campaign.shell_fe_chunk_size = parse_count(chunk->value, reader.location(*chunk), chunk->key, 1, 10000);
+  }
+  reader.reject_unknown_keys(
+      "law, mesh, substrate, bending, half_model, tube_length_um, probe_distance_um, force_window_uN, chunk_size");
+  options.validate(document.location(section.line));
 }
 
 void read_instrument_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
@@ -244,11 +283,36 @@ CampaignLine read_line_section(const IniDocument& document, const IniSection& se
       require_readable_file(reader, *correlation, line.correlation_path);
     }
   }
-  reader.reject_unknown_keys("distributions or raw, rank_correlation");
+  if (const IniEntry* fidelity = reader.optional("fidelity")) {
+    line.fidelity = parse_fidelity(fidelity->value, reader.location(*fidelity), fidelity->key);
+  }
+  reader.reject_unknown_keys("distributions or raw, rank_correlation, fidelity");
   return line;
 }
 
 }  // namespace
+
+std::string_view to_string(Fidelity fidelity) {
+  switch (fidelity) {
+    case Fidelity::closed_form: return "closed_form";
+    case Fidelity::corrected: return "corrected";
+    case Fidelity::shell_fe: return "shell_fe";
+  }
+  return "?";
+}
+
+Fidelity parse_fidelity(std::string_view text, std::string_view location, std::string_view key) {
+  if (text == "closed_form" || text == "thin_shell") return Fidelity::closed_form;
+  if (text == "corrected") return Fidelity::corrected;
+  if (text == "shell_fe") return Fidelity::shell_fe;
+  throw_bad_value(location, key, text,
+                  "closed_form (the thin shell's closed forms; old name thin_shell), corrected (the closed form "
+                  "corrected to the finite-element model) or shell_fe (the finite-element model)");
+}
+
+bool Campaign::uses(Fidelity wanted) const {
+  return std::any_of(lines.begin(), lines.end(), [&](const CampaignLine& line) { return fidelity_of(line) == wanted; });
+}
 
 const CampaignLine* Campaign::find_line(std::string_view line_name) const {
   for (const CampaignLine& line : lines) {
@@ -293,13 +357,15 @@ Campaign parse_campaign(const std::string& text, const std::string& path) {
       read_physics_section(document, section, campaign);
     } else if (section.name == "data_uncertainty") {
       read_data_uncertainty_section(document, section, campaign);
+    } else if (section.name == "shell_fe") {
+      read_shell_fe_section(document, section, campaign);
     } else if (section.name.starts_with("line ")) {
       campaign.lines.push_back(read_line_section(document, section));
     } else {
       throw InputError(document.location(section.line),
                        "unknown section [" + section.name +
-                           "] (expected [campaign], [instrument], [growth], [physics_correlation], [data_uncertainty] or "
-                           "[line NAME])");
+                           "] (expected [campaign], [instrument], [growth], [physics_correlation], [data_uncertainty], "
+                           "[shell_fe] or [line NAME])");
     }
   }
   if (!has_campaign) throw InputError(path, "no [campaign] section (name, seed, samples, outputs, output_dir)");

@@ -12,10 +12,11 @@
 
 namespace growthuq {
 
-// The campaign's models: the turgor and modulus of its fidelity (thin_shell: p from k, d, d0
-// and E from p, d, d0, h, for the campaign's instrument), the viscosity (eta from tau, einf, E) and the growth law (v from
+// The models of a fidelity: its turgor and modulus (closed_form: p from k, d, d0 and E from p, d,
+// d0, h; corrected and shell_fe: p and E together from k, d, d0, h; for the campaign's
+// instrument and [shell_fe] options), the viscosity (eta from tau, einf, E) and the growth law (v from
 // p, d, eta, h) at the campaign's yield pressure, with kappa = 1: the run calibrates kappa on the
 // reference line and scales v after (kappa.hpp).
-std::vector<std::unique_ptr<const Evaluator>> campaign_models(const Campaign& campaign);
+std::vector<std::unique_ptr<const Evaluator>> campaign_models(const Campaign& campaign, Fidelity fidelity);
 
 }  // namespace growthuq

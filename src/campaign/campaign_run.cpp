@@ -92,13 +92,13 @@ PreparedCampaign::PreparedCampaign(Campaign campaign, Pool& pool, ProgressMode p
 
 PreparedCampaign::PreparedCampaign(Campaign campaign, Pool* pool, ProgressMode progress, std::ostream* log)
     : campaign_(std::move(campaign)),
-      models_(campaign_models(campaign_)),
       experimental_median_(std::numeric_limits<double>::quiet_NaN()) {
   calibrates_kappa_ = wants(campaign_, KappaCalibration::quantity);
-  std::vector<const Evaluator*> available;
-  for (const std::unique_ptr<const Evaluator>& model : models_) available.push_back(model.get());
-
   for (const CampaignLine& campaign_line : campaign_.lines) {
+    const Fidelity fidelity = campaign_.fidelity_of(campaign_line);
+    if (!models_.contains(fidelity)) models_.emplace(fidelity, campaign_models(campaign_, fidelity));
+    std::vector<const Evaluator*> available;
+    for (const std::unique_ptr<const Evaluator>& model : models_.at(fidelity)) available.push_back(model.get());
     PreparedLine line;
     line.campaign_line = campaign_line;
     const CurveFitter fit_curves = pool != nullptr ? shared_curve_fitter(*pool, campaign_line.name, progress, *log) : CurveFitter();
@@ -334,7 +334,7 @@ class LineRun {
       for (std::size_t i = 0; i < size; ++i) evaluated->status[range.begin + i] = chunk.status(i);
       observer_.chunk_done(range);
     };
-    const std::size_t chunk_size = campaign_.campaign().chunk_size;
+    const std::size_t chunk_size = campaign_.campaign().chunk_size_of(line.campaign_line);
     if (journal_ == nullptr) {
       pool_.run(samples_, chunk_size, work, sink);
     } else {

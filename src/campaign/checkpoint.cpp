@@ -93,10 +93,11 @@ std::unique_ptr<RunCheckpoint> RunCheckpoint::resume(Pool& pool, const PreparedC
     const std::string path = checkpoint_chunk_log_path(checkpoint->output_dir_);
     const ChunkLogScan scan = scan_chunk_log(path);
     const std::size_t n = campaign.campaign().samples;
-    const std::size_t chunk_size = campaign.campaign().chunk_size;
     const std::size_t values_per_sample = ChunkValues::values_per_sample(campaign.computed_outputs().size());
     for (const ChunkRecord& record : scan.records) {
       const std::size_t size = record.range.end - record.range.begin;
+      const std::size_t chunk_size =
+          record.line < campaign.lines().size() ? campaign.campaign().chunk_size_of(campaign.lines()[record.line].campaign_line) : 1;
       const bool fits = record.line < checkpoint->held_.size() && record.range.begin % chunk_size == 0 &&
                         record.range.end == std::min(n, record.range.begin + chunk_size) &&
                         record.count == values_per_sample * size;

@@ -78,8 +78,25 @@ void Progress::stopped() {
 }
 
 void Progress::draw_bar(bool force) {
-  if (mode_ != ProgressMode::bar) return;
+  if (mode_ == ProgressMode::none) return;
   const Clock::time_point now = Clock::now();
+  if (mode_ == ProgressMode::lines) {
+    // A log gets a line at most every 30 s, so that a run whose lines take minutes (fidelity
+    // shell_fe: minutes per sample) shows it is alive, and how long it has left, without
+    // filling the log; a line that starts does not count as progress.
+    if (force || done_ == 0) {
+      if (done_ == 0) last_draw_ = now;
+      return;
+    }
+    if (seconds_between(last_draw_, now) < 30.0 || done_ >= total_) return;
+    last_draw_ = now;
+    const double elapsed = seconds_between(start_, now);
+    const double rate = elapsed > 0 ? static_cast<double>(done_) / elapsed : 0.0;
+    out_ << "progress: " << done_ << "/" << total_ << " samples, line " << line_ << " " << line_done_ << "/"
+         << line_samples_ << ", " << rate_text(rate) << " samples/s, about " << duration_text(static_cast<double>(total_ - done_) / rate)
+         << " left\n" << std::flush;
+    return;
+  }
   // Redrawing more than ten times a second only costs time.
   if (!force && seconds_between(last_draw_, now) < 0.1 && done_ < total_) return;
   last_draw_ = now;

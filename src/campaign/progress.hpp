@@ -1,5 +1,6 @@
 // Progress of a campaign run on stderr: a bar with samples done, rate and time left when stderr
-// is a terminal; one line per finished plant line otherwise (logs, batch jobs); nothing when
+// is a terminal; otherwise (logs, batch jobs) one line per finished plant line, and a line with
+// samples done, rate and time left at most every 30 s while a line runs; nothing when
 // the user asked for quiet. The same for the counted steps around the sampling (raw-data curve
 // fits, the data-uncertainty bootstrap).
 #pragma once

@@ -48,13 +48,7 @@ class SummaryObserver final : public RunObserver {
 
 }  // namespace
 
-std::string fidelity_label(Fidelity fidelity) {
-  switch (fidelity) {
-    case Fidelity::thin_shell:
-      return "analytic";
-  }
-  return "unknown";
-}
+std::string fidelity_label(Fidelity fidelity) { return std::string(to_string(fidelity)); }
 
 std::vector<TradeoffRun> run_tradeoff(const Campaign& campaign, std::span<const std::size_t> sample_counts, Pool& pool,
                                       ProgressMode progress, std::ostream& log) {

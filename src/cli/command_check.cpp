@@ -10,6 +10,7 @@
 
 #include "campaign/campaign_outputs.hpp"
 #include "campaign/run_footprint.hpp"
+#include "campaign/run_time_estimate.hpp"
 #include "campaign_flags.hpp"
 #include "commands.hpp"
 #include "growthuq/campaign/campaign_run.hpp"
@@ -55,9 +56,10 @@ std::string data_uncertainty_plan(const Campaign& c) {
 
 void print_plan(const PreparedCampaign& prepared, const RunFootprint& footprint, const MachineRoom& room) {
   const Campaign& c = prepared.campaign();
+  const std::optional<ShellFeTimeEstimate> shell_fe_time = estimate_shell_fe_time(prepared);
   std::cout << "campaign '" << c.name << "' (" << c.path << "): " << prepared.lines().size()
             << (prepared.lines().size() == 1 ? " line" : " lines") << " x " << c.samples << " samples, seed " << c.seed
-            << ", fidelity thin_shell\n"
+            << ", fidelity " << to_string(c.fidelity) << "\n"
             << "outputs: " << joined(c.outputs) << "\n\nlines, in run order:\n";
   for (const PreparedLine& line : prepared.lines()) {
     const CampaignLine& source = line.campaign_line;
@@ -69,7 +71,8 @@ void print_plan(const PreparedCampaign& prepared, const RunFootprint& footprint,
     std::cout << "  " << source.name << ": "
               << (source.raw_path.empty() ? "distributions " + source.distributions_path : "fitted from raw data " + source.raw_path)
               << "\n    samples " << (variables.empty() ? std::string("nothing") : joined(variables)) << "; "
-              << correlation_text(line) << "\n    models " << (models.empty() ? std::string("none") : joined(models)) << "\n";
+              << correlation_text(line) << "\n    models " << (models.empty() ? std::string("none") : joined(models))
+              << (source.fidelity ? " (fidelity " + std::string(to_string(*source.fidelity)) + ")" : std::string()) << "\n";
   }
   const auto raw_lines = std::count_if(prepared.lines().begin(), prepared.lines().end(),
                                        [](const PreparedLine& line) { return !line.campaign_line.raw_path.empty(); });
@@ -81,7 +84,8 @@ void print_plan(const PreparedCampaign& prepared, const RunFootprint& footprint,
             << (room.memory_bytes ? readable_size(*room.memory_bytes) + " available" : std::string("available memory unknown"))
             << "), disk " << readable_size(footprint.disk_bytes) << " ("
             << (room.disk_bytes ? readable_size(*room.disk_bytes) + " free there" : std::string("free space unknown")) << ")\n"
-            << "time: not estimated (growthuq tradeoff " << c.path << " measures it for sample counts you choose)\n"
+            << (shell_fe_time ? describe_shell_fe_time(*shell_fe_time, 1)
+                              : "time: not estimated (growthuq tradeoff " + c.path + " measures it for sample counts you choose)\n")
             << data_uncertainty_plan(c) << "checked: nothing was sampled or written\n";
 }
 

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
+#include "growthuq/correction/corrected_closed_form.hpp"
 #include "growthuq/evaluation/evaluator.hpp"
 #include "growthuq/fe/indentation.hpp"
 #include "growthuq/io/csv.hpp"
@@ -64,6 +66,9 @@ constexpr std::array outputs{
     Output{"wall_stiffness", "N/m", true},
 };
 
+// Fidelity corrected writes p and E together, from k, d, d0 and h.
+constexpr std::array corrected_outputs{Output{"p", "MPa", true}, Output{"E", "MPa", true}};
+
 const Unit& unit_of(std::string_view symbol) { return find_unit(symbol, command, "unit"); }
 
 // The instrument from the flags, through the parser the campaign file uses (the evaluators
@@ -91,7 +96,7 @@ double positive_flag(const std::string& text, std::string_view key, std::string_
   return value;
 }
 
-int evaluate_point(const EvalOptions& options, const Instrument& parameters) {
+int evaluate_point(const EvalOptions& options, const Instrument& parameters, const Evaluator* corrected) {
   for (const auto& [text, key] : {std::pair{&options.k, "--k"}, std::pair{&options.d_um, "--d-um"},
                                   std::pair{&options.d0_um, "--d0-um"}}) {
     if (text->empty()) {
@@ -99,6 +104,7 @@ int evaluate_point(const EvalOptions& options, const Instrument& parameters) {
     }
   }
   const bool has_h = !options.h_nm.empty();
+  if (corrected != nullptr && !has_h) throw InputError(std::string(command), "--h-nm is required with --fidelity corrected");
   SampleBlock block(1);
   block.set_column("k", std::vector<double>{positive_flag(options.k, "--k", "a positive stiffness in N/m")});
   const double d_um = positive_flag(options.d_um, "--d-um", "a positive diameter in um");
@@ -112,13 +118,18 @@ int evaluate_point(const EvalOptions& options, const Instrument& parameters) {
   }
   const ThinShellTurgor turgor(parameters, command);
   const ThinShellModulus modulus;
-  run_plan(plan_for(turgor, modulus, has_h), block);
+  if (corrected != nullptr) {
+    run_plan(std::vector<const Evaluator*>{corrected}, block);
+  } else {
+    run_plan(plan_for(turgor, modulus, has_h), block);
+  }
 
   const SampleStatus status = block.status()[0];
-  std::cout << "thin-shell inverse (Vogler et al. 2013, Arnoldi et al. 2000): rho = " << options.rho_um
-            << " um, nu = " << format_double(parameters.poisson_ratio) << ", k_sys = "
+  std::cout << (corrected != nullptr ? "corrected closed form (src/correction/README.md)"
+                                     : "thin-shell inverse (Vogler et al. 2013, Arnoldi et al. 2000)")
+            << ": rho = " << options.rho_um << " um, nu = " << format_double(parameters.poisson_ratio) << ", k_sys = "
             << (std::isinf(parameters.sensor_stiffness_N_per_m) ? "inf (ideal sensor)" : options.k_sys + " N/m") << "\n";
-  for (const Output& output : outputs) {
+  for (const Output& output : corrected != nullptr ? std::span<const Output>(corrected_outputs) : std::span<const Output>(outputs)) {
     if (output.needs_h && !has_h) continue;
     const Quantity* quantity = find_quantity(output.quantity);
     const double value = block.column(output.quantity)[0];
@@ -309,7 +320,8 @@ int write_shell_fe_file(const EvalOptions& options, const Instrument& parameters
   return 0;
 }
 
-int evaluate_file(const EvalOptions& options, const Instrument& parameters, const ShellFeOptions* model) {
+int evaluate_file(const EvalOptions& options, const Instrument& parameters, const ShellFeOptions* model,
+                  const Evaluator* corrected = nullptr) {
   if (options.out.empty()) throw InputError(std::string(command), "--in needs --out (the results CSV to write)");
   for (const auto& [text, key] : {std::pair{&options.k, "--k"}, std::pair{&options.h_nm, "--h-nm"},
                                   std::pair{&options.d_um, "--d-um"}, std::pair{&options.d0_um, "--d0-um"}}) {
@@ -353,11 +365,18 @@ int evaluate_file(const EvalOptions& options, const Instrument& parameters, cons
 
   const ThinShellTurgor turgor(parameters, command);
   const ThinShellModulus modulus;
-  run_plan(plan_for(turgor, modulus, has_h), block);
+  if (corrected != nullptr) {
+    if (!has_h) {
+      throw InputError(file_location(table.path, 0), "--fidelity corrected needs the wall thickness: a column h_nm (or h_um, ...)");
+    }
+    run_plan(std::vector<const Evaluator*>{corrected}, block);
+  } else {
+    run_plan(plan_for(turgor, modulus, has_h), block);
+  }
 
   std::vector<std::string> header = table.header;
   std::vector<const Output*> written;
-  for (const Output& output : outputs) {
+  for (const Output& output : corrected != nullptr ? std::span<const Output>(corrected_outputs) : std::span<const Output>(outputs)) {
     if (output.needs_h && !has_h) continue;
     const std::string name = column_name(output.quantity, unit_of(output.unit));
     if (table.has_column(name)) {
@@ -422,10 +441,13 @@ int run_eval(const Arguments& arguments) {
                                        "hoop_stress_MPa, wall_stiffness_N_per_m, status; - writes it to standard "
                                        "output (the report then goes to standard error)")
       ("force", po::bool_switch(&options.force), "overwrite --out if it exists")
-      ("fidelity", po::value(&options.fidelity), "the model inverted: closed_form (default; the thin shell, instant) or "
-                                                 "shell_fe (the finite-element shell, seconds per tube; needs h; writes "
-                                                 "p_MPa, E_MPa, lambda, hoop_stress_MPa, wall_stiffness_N_per_m, h0_nm, "
-                                                 "status). The options below are shell_fe's:");
+      ("fidelity", po::value(&options.fidelity), "the model inverted: closed_form (default; the thin shell, instant), "
+                                                 "corrected (the closed form corrected to the finite-element shell, "
+                                                 "instant; needs h; writes p_MPa, E_MPa, status) or shell_fe (the "
+                                                 "finite-element shell, minutes per tube; needs h; writes p_MPa, E_MPa, "
+                                                 "lambda, hoop_stress_MPa, wall_stiffness_N_per_m, h0_nm, status). The "
+                                                 "options below are the finite-element model's (corrected refuses values "
+                                                 "other than those it was fitted for):");
   options.model.declare(described);
   po::variables_map values;
   if (!parse_arguments(arguments, "eval",
@@ -435,7 +457,9 @@ int run_eval(const Arguments& arguments) {
                        "Valid for 1 < d/d0 <= e (beyond e the wall is past its pressure maximum); other tubes get a\n"
                        "status, not a number.\n\n"
                        "--fidelity shell_fe inverts the finite-element shell instead (src/fe/README.md): p/E and h0 from\n"
-                       "the turgid d/d0 and the turgid (measured) h, then E from k over the force window; it needs h.",
+                       "the turgid d/d0 and the turgid (measured) h, then E from k over the force window; it needs h.\n"
+                       "--fidelity corrected applies the correction fitted to that inverse over the Arabidopsis-like\n"
+                       "envelope (src/correction/README.md); a tube outside it gets status outside_correction.",
                        described, {}, values)) {
     return 0;
   }
@@ -446,11 +470,21 @@ int run_eval(const Arguments& arguments) {
   if (options.fidelity == "closed_form") {
     for (const char* flag : {"law", "geometry", "mesh-file", "mesh", "substrate", "bending", "half-model", "tube-length-um",
                              "probe-distance-um", "window-uN"}) {
-      if (values.count(flag)) throw InputError(std::string(command), "--" + std::string(flag) + " needs --fidelity shell_fe");
+      if (values.count(flag)) {
+        throw InputError(std::string(command), "--" + std::string(flag) + " needs --fidelity shell_fe (or corrected)");
+      }
     }
-    return options.in.empty() ? evaluate_point(options, parameters) : evaluate_file(options, parameters, nullptr);
+    return options.in.empty() ? evaluate_point(options, parameters, nullptr) : evaluate_file(options, parameters, nullptr);
   }
-  if (options.fidelity != "shell_fe") throw_bad_value(command, "--fidelity", options.fidelity, "closed_form or shell_fe");
+  if (options.fidelity == "corrected") {
+    // The model options say what the correction must have been fitted for: refused otherwise.
+    const CorrectedTurgorModulus corrected(parameters, options.model.parse(command), command);
+    return options.in.empty() ? evaluate_point(options, parameters, &corrected)
+                              : evaluate_file(options, parameters, nullptr, &corrected);
+  }
+  if (options.fidelity != "shell_fe") {
+    throw_bad_value(command, "--fidelity", options.fidelity, "closed_form, corrected or shell_fe");
+  }
   const ShellFeOptions model = options.model.parse(command);
   return options.in.empty() ? evaluate_point_shell_fe(options, parameters, model) : evaluate_file(options, parameters, &model);
 }

@@ -18,6 +18,7 @@
 #include "campaign/checkpoint_manifest.hpp"
 #include "campaign/progress.hpp"
 #include "campaign/run_footprint.hpp"
+#include "campaign/run_time_estimate.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/printable.hpp"
 #include "core/interrupt.hpp"
@@ -135,6 +136,10 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
     const std::string where = resuming ? checkpoint_manifest_path(options.resume) : from_flag ? std::string(location) : options.campaign;
     require_room(estimate_run_footprint(shape), machine_room(pool.processes_on_this_machine(), prepared->campaign().output_dir),
                  where, resuming ? "samples" : from_flag ? "--samples" : "[campaign] samples");
+    // Finite-element samples take minutes each: how long the run will take, before it starts.
+    if (const auto time = estimate_shell_fe_time(*prepared); time && settings.progress != ProgressMode::none) {
+      std::cerr << "growthuq run: " << describe_shell_fe_time(*time, pool.size()) << std::flush;
+    }
   });
 
   // From here a first Ctrl-C or SIGTERM stops the pool at the next chunk (the coordinator's

@@ -29,5 +29,6 @@ int run_tradeoff(const Arguments& arguments);
 int run_synth(const Arguments& arguments);
 int run_fit_line(const Arguments& arguments);
 int run_indent(const Arguments& arguments);
+int run_fit_correction(const Arguments& arguments);
 
 }  // namespace growthuq::cli

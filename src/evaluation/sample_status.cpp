@@ -14,6 +14,13 @@ std::string_view to_string(SampleStatus status) {
     case SampleStatus::stiffness_at_sensor_limit: return "stiffness_at_sensor_limit";
     case SampleStatus::out_of_range: return "out_of_range";
     case SampleStatus::unstable_branch: return "unstable_branch";
+    case SampleStatus::not_converged: return "not_converged";
+    case SampleStatus::contact_lost: return "contact_lost";
+    case SampleStatus::probe_beyond_mesh: return "probe_beyond_mesh";
+    case SampleStatus::window_not_reached: return "window_not_reached";
+    case SampleStatus::no_inflation_state: return "no_inflation_state";
+    case SampleStatus::no_modulus_root: return "no_modulus_root";
+    case SampleStatus::outside_correction: return "outside_correction";
   }
   return "unknown";
 }
@@ -30,6 +37,13 @@ std::string_view describe(SampleStatus status) {
     case SampleStatus::stiffness_at_sensor_limit: return "measured stiffness at or above the sensor stiffness k_sys";
     case SampleStatus::out_of_range: return "a result is beyond double precision range";
     case SampleStatus::unstable_branch: return "d/d0 > e: on the unstable branch of the hoop relation, the forward model gives a smaller diameter";
+    case SampleStatus::not_converged: return "finite-element model: Newton's method did not converge, even with the load step cut";
+    case SampleStatus::contact_lost: return "finite-element model: the probe lost contact with the wall";
+    case SampleStatus::probe_beyond_mesh: return "finite-element model: the contact left the meshed region";
+    case SampleStatus::window_not_reached: return "finite-element model: the force curve never reached the force window's top";
+    case SampleStatus::no_inflation_state: return "finite-element model: no pressure gives the measured turgid diameter and thickness";
+    case SampleStatus::no_modulus_root: return "finite-element model: no modulus gives the measured k over the force window";
+    case SampleStatus::outside_correction: return "fidelity corrected: the tube lies outside the region the correction was fitted on";
   }
   return "unknown status";
 }

@@ -209,7 +209,7 @@ TEST_CASE("tradeoff of a real campaign: errors fall with n and the median's 95 %
   CHECK(log.str().empty());  // no progress, no design warnings at these counts
   REQUIRE(runs.size() == counts.size());
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    CHECK(runs[i].fidelity == "analytic");
+    CHECK(runs[i].fidelity == "closed_form");
     CHECK(runs[i].samples == counts[i]);
     CHECK(runs[i].seconds > 0);
     REQUIRE(runs[i].summaries.size() == rows_per_run);

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "growthuq/fe/indentation.hpp"
 #include "growthuq/mechanics/mechanical_correlation.hpp"
 #include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/sampling/latin_hypercube.hpp"
@@ -27,9 +28,16 @@ enum class CorrelationSource {
   physics,  // derived from the forward thin-shell model (Eq. (M16), src/mechanics/README.md)
 };
 
-// Which model turns measurements into turgor and modulus. Only the thin shell exists today;
-// the key is there so campaigns state it and a finite-element fidelity can join later.
-enum class Fidelity { thin_shell };
+// Which model turns measurements into turgor and modulus (README, "Fidelity").
+enum class Fidelity {
+  closed_form,  // the thin shell's closed forms (hoop and Arnoldi relations); old name thin_shell
+  corrected,    // the closed form times a correction fitted to the finite-element inverse
+  shell_fe,     // the finite-element shell's inverse, one simulation per sample
+};
+std::string_view to_string(Fidelity);  // "closed_form", "corrected", "shell_fe"
+// "closed_form" (or its old name "thin_shell"), "corrected", "shell_fe"; InputError naming
+// `location` and `key` otherwise.
+Fidelity parse_fidelity(std::string_view text, std::string_view location, std::string_view key);
 
 struct CampaignLine {
   std::string name;                // from the section header [line NAME]
@@ -38,6 +46,7 @@ struct CampaignLine {
                                    // from raw data; exactly one of the two paths is set
   CorrelationSource correlation = CorrelationSource::none;
   std::string correlation_path;    // when correlation == file, resolved like distributions_path
+  std::optional<Fidelity> fidelity;  // the line's own fidelity = ...; the campaign's otherwise
   long line = 0;                   // line of the section header, for messages
 };
 
@@ -73,8 +82,10 @@ struct Campaign {
   std::size_t samples = 0;            // per line
   std::vector<std::string> outputs;   // quantity names: any of p, E, eta, v and intermediates
   StratumPosition stratum_position = StratumPosition::random;
-  std::size_t chunk_size = 4096;      // samples per unit of work handed to a process
-  Fidelity fidelity = Fidelity::thin_shell;
+  std::size_t chunk_size = 4096;      // samples per unit of work handed to a process (analytic lines)
+  Fidelity fidelity = Fidelity::closed_form;
+  ShellFeOptions shell_fe;            // [shell_fe]: the finite-element model's options
+  std::size_t shell_fe_chunk_size = 1;  // [shell_fe] chunk_size: samples per unit of work of shell_fe lines
   Instrument instrument;     // probe radius (required), Poisson ratio, sensor stiffness
   double yield_pressure = 0.0;        // p0 [Pa]
   std::string reference_line;         // calibrates kappa; required when v is an output
@@ -85,6 +96,13 @@ struct Campaign {
   std::vector<CampaignLine> lines;    // in file order
 
   const CampaignLine* find_line(std::string_view name) const;
+  Fidelity fidelity_of(const CampaignLine& line) const { return line.fidelity.value_or(fidelity); }
+  // Samples per unit of work of a line: one finite-element sample by default (they take
+  // minutes each and balance only when handed out one by one), `chunk_size` otherwise.
+  std::size_t chunk_size_of(const CampaignLine& line) const {
+    return fidelity_of(line) == Fidelity::shell_fe ? shell_fe_chunk_size : chunk_size;
+  }
+  bool uses(Fidelity wanted) const;  // whether any line runs at this fidelity
 };
 
 // Reads and validates a campaign file: unknown sections or keys, missing required keys, bad

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -95,7 +96,8 @@ class PreparedCampaign {
   PreparedCampaign(Campaign campaign, Pool* pool, ProgressMode progress, std::ostream* log);
 
   Campaign campaign_;
-  std::vector<std::unique_ptr<const Evaluator>> models_;  // what the lines' plans choose from
+  // What the lines' plans choose from, per fidelity the lines use (campaign_models.hpp).
+  std::map<Fidelity, std::vector<std::unique_ptr<const Evaluator>>> models_;
   std::vector<PreparedLine> lines_;
   std::vector<std::string> computed_outputs_;
   bool calibrates_kappa_ = false;

@@ -20,10 +20,19 @@ enum class SampleStatus : std::uint8_t {
   out_of_range = 8,           // a result overflows or underflows double precision
   unstable_branch = 9,        // e < lambda, q < 1: past the hoop relation's pressure maximum; the
                               // forward model gives the other (smaller) diameter for that p, E, h
+  // The finite-element inverse's own (fidelity shell_fe; growthuq/fe/indentation.hpp):
+  not_converged = 10,         // Newton's method did not converge, even with the load step cut
+  contact_lost = 11,          // the probe lost contact with the wall
+  probe_beyond_mesh = 12,     // the contact left the meshed region
+  window_not_reached = 13,    // the force curve never reached the force window's top
+  no_inflation_state = 14,    // no pressure gives the measured turgid diameter and thickness
+  no_modulus_root = 15,       // no modulus gives the measured k over the force window
+  // Fidelity corrected: the measurement lies outside the region the correction was fitted on.
+  outside_correction = 16,
 };
 
 // The largest code: names and counts run over 0 .. last_sample_status (HDF5 "names" attribute).
-inline constexpr SampleStatus last_sample_status = SampleStatus::unstable_branch;
+inline constexpr SampleStatus last_sample_status = SampleStatus::outside_correction;
 
 // A set of statuses, one bit each.
 class StatusSet {

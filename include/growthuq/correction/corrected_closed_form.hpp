@@ -1,0 +1,113 @@
+// Fidelity `corrected`: the thin shell's closed-form inverse (hoop and Arnoldi relations,
+// mechanics/thin_shell.hpp) times a correction fitted to the finite-element inverse
+// (fe/indentation.hpp) over the Arabidopsis-like envelope, at closed-form speed.
+// src/correction/README.md states the model, its training data and its error.
+//
+// The finite-element model depends on p/E, h0/d0, rho/d0 (and L/d0, a/d0, nu, the force window
+// over E d0^2); a measured tube gives four dimensionless groups from which all of these follow:
+//   s = d/d0 - 1 (hoop strain), h/d0 (turgid thickness), rho/d0, w = F_top / (k d0),
+// w being the depth at which the closed form's k would reach the force window's top, over d0.
+// The correction is two quadratic polynomials in the logarithms of these groups (each scaled
+// onto [-1, 1] over the training data):
+//   E       = E_closed_form * exp(c_E(z))
+//   p / E   = (p/E)_far_field * exp(c_pE(z))
+// where (p/E)_far_field is the model's own far-field inflation inverted exactly (the log law:
+// src/fe/README.md, section 2) and c_pE is the small correction of the meshed tube's inflation.
+#pragma once
+
+#include <array>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "growthuq/evaluation/evaluator.hpp"
+#include "growthuq/fe/indentation.hpp"
+#include "growthuq/mechanics/instrument.hpp"
+#include "growthuq/mechanics/thin_shell.hpp"
+
+namespace growthuq {
+
+inline constexpr std::size_t correction_groups = 4;      // s, h/d0, rho/d0, w
+inline constexpr std::size_t correction_terms = 15;      // 1, z_i, z_i z_j (i <= j)
+
+struct Correction {
+  // What it was fitted for: a campaign's [shell_fe] options and nu must match (fitted_for()).
+  ShellFeLaw law = ShellFeLaw::hencky;
+  bool substrate = true;
+  bool bending = true;
+  double tube_length = 100e-6;                        // m
+  double probe_distance = 10e-6;                      // m
+  std::array<double, 2> force_window{0.4e-6, 4e-6};   // N
+  double poisson_ratio = 0.2;
+  // The training data's range of ln(group), per group: outside it, no value.
+  std::array<double, correction_groups> low{}, high{};
+  std::array<double, correction_terms> modulus{};         // c_E
+  std::array<double, correction_terms> pressure_ratio{};  // c_pE
+  int training_points = 0;
+};
+
+// The correction compiled into the engine (src/correction/shipped_correction.inc, written by
+// `growthuq fit-correction` from src/correction/training.csv).
+const Correction& shipped_correction();
+
+// InputError naming `location` and the first option that differs from what `correction` was
+// fitted for (the law, substrate, bending, tube length, probe distance, force window, nu).
+void require_fitted_for(const Correction& correction, const ShellFeOptions& options, const Instrument& instrument,
+                        std::string_view location);
+
+// ln of the four groups of a measured tube; k is the tube's own stiffness (after the sensor).
+std::array<double, correction_groups> correction_log_groups(double k_tube, const TubeDiameters& diameters, double h,
+                                                            double probe_radius, const Correction& correction);
+
+struct CorrectedInverse {
+  double p = 0.0, E = 0.0;              // Pa
+  double closed_form_p = 0.0, closed_form_E = 0.0;
+  SampleStatus status = SampleStatus::ok;  // the closed form's, no_inflation_state, outside_correction
+};
+
+// (k_measured, d, d0, h; rho, nu, k_sys) -> (p, E) at fidelity corrected.
+CorrectedInverse corrected_inverse(double k_measured, const TubeDiameters& diameters, double h,
+                                   const Instrument& instrument, const Correction& correction) noexcept;
+
+// Fidelity corrected as a campaign's evaluator: reads k, d, d0, h; writes p, E.
+class CorrectedTurgorModulus final : public Evaluator {
+ public:
+  // InputError naming `location` when the instrument is invalid or the options are not those
+  // the correction was fitted for.
+  CorrectedTurgorModulus(const Instrument& instrument, const ShellFeOptions& options, std::string_view location,
+                         const Correction& correction = shipped_correction());
+  std::string_view name() const override { return "corrected_turgor_modulus"; }
+  std::vector<std::string> reads() const override { return {"k", "d", "d0", "h"}; }
+  std::vector<std::string> writes() const override { return {"p", "E"}; }
+  void evaluate(SampleBlock& block) const override;
+
+ private:
+  Instrument instrument_;
+  Correction correction_;
+};
+
+// One row of the training data (src/correction/training.csv): a forward finite-element
+// simulation's inputs and what an instrument measures of it, SI.
+struct TrainingPoint {
+  int index = 0;
+  double p = 0, E = 0, h = 0, d0 = 0, rho = 0;  // inputs (h turgid)
+  double k = 0, d = 0;                          // measured: k over the window, turgid d
+  bool ok = false;                              // status ok (k and d present)
+};
+
+// The rows of a training CSV (header index,p_MPa,E_MPa,h_nm,d0_um,rho_um,k_N_per_m,d_um,status,...);
+// InputError naming the file and line of a malformed row.
+std::vector<TrainingPoint> read_training_csv(const std::string& path);
+
+// Whether a row is held out of the fit (every fifth index) to test the correction.
+inline bool held_out(const TrainingPoint& point) { return point.index % 5 == 4; }
+
+// Least-squares fit of both polynomials to the fitting rows (ok and not held out) for the model
+// options the data were made with. InputError when fewer rows than twice the terms remain.
+Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOptions& options, double poisson_ratio);
+
+// The C++ text of shipped_correction.inc for `correction` (every number to 17 digits).
+std::string correction_source(const Correction& correction);
+
+}  // namespace growthuq

@@ -1,0 +1,65 @@
+#include "campaign/run_time_estimate.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "growthuq/campaign/campaign_file.hpp"
+
+namespace growthuq {
+namespace {
+
+std::string duration(double seconds) {
+  char text[64];
+  if (seconds < 120) {
+    std::snprintf(text, sizeof text, "%.0f s", seconds);
+  } else if (seconds < 7200) {
+    std::snprintf(text, sizeof text, "%.0f min", seconds / 60);
+  } else if (seconds < 3 * 86400) {
+    std::snprintf(text, sizeof text, "%.1f h", seconds / 3600);
+  } else {
+    std::snprintf(text, sizeof text, "%.1f days", seconds / 86400);
+  }
+  return text;
+}
+
+}  // namespace
+
+double shell_fe_seconds_per_sample(ShellFeMesh mesh) {
+  switch (mesh) {
+    case ShellFeMesh::coarse: return 8.0;
+    case ShellFeMesh::standard: return 40.0;
+    case ShellFeMesh::fine: return 160.0;
+  }
+  return 40.0;
+}
+
+std::optional<ShellFeTimeEstimate> estimate_shell_fe_time(const PreparedCampaign& prepared) {
+  const Campaign& campaign = prepared.campaign();
+  ShellFeTimeEstimate estimate;
+  for (const PreparedLine& line : prepared.lines()) {
+    if (campaign.fidelity_of(line.campaign_line) != Fidelity::shell_fe) continue;
+    estimate.samples += campaign.samples;
+    // Every replicate of the bootstrap runs every line's models again.
+    estimate.bootstrap_samples += campaign.data_uncertainty.replicates * data_uncertainty_samples(campaign);
+  }
+  if (estimate.samples == 0) return std::nullopt;
+  estimate.samples += estimate.bootstrap_samples;
+  estimate.seconds_per_sample = shell_fe_seconds_per_sample(campaign.shell_fe.mesh);
+  estimate.core_seconds = static_cast<double>(estimate.samples) * estimate.seconds_per_sample;
+  return estimate;
+}
+
+std::string describe_shell_fe_time(const ShellFeTimeEstimate& estimate, int processes) {
+  const int workers = processes < 1 ? 1 : processes;
+  std::string text = "time: fidelity shell_fe, " + std::to_string(estimate.samples) + " finite-element samples x about " +
+                     duration(estimate.seconds_per_sample) + " of one core each (mesh level's median, stated model): about " +
+                     duration(estimate.core_seconds / workers) + " with " + std::to_string(workers) +
+                     (workers == 1 ? " process" : " processes");
+  if (estimate.bootstrap_samples > 0) {
+    text += "; " + std::to_string(estimate.bootstrap_samples) +
+            " of the samples are the data-uncertainty bootstrap's ([data_uncertainty] replicates = 0 switches it off)";
+  }
+  return text + "\n";
+}
+
+}  // namespace growthuq

@@ -1,0 +1,96 @@
+// growthuq fit-correction: fits fidelity corrected (src/correction/README.md) to the
+// finite-element training data and writes the C++ text the engine compiles in; prints the
+// errors in p and E of the corrected and the plain closed form against the finite-element
+// values, on the fitted rows and on the held-out ones (every fifth index).
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+#include "growthuq/correction/corrected_closed_form.hpp"
+#include "growthuq/io/output_file.hpp"
+#include "options.hpp"
+
+namespace growthuq::cli {
+namespace {
+
+constexpr std::string_view command = "growthuq fit-correction";
+constexpr std::string_view usage = "[--training FILE] [--out FILE.inc] [--force]";
+
+struct Errors {
+  int rows = 0, outside = 0;
+  double max_p = 0, max_E = 0, max_closed_p = 0, max_closed_E = 0;
+};
+
+// The largest relative errors of the corrected and the closed form against the training rows'
+// finite-element p and E, over the rows `held` says.
+Errors errors_of(const std::vector<TrainingPoint>& points, const Correction& correction, bool held) {
+  Errors errors;
+  for (const TrainingPoint& point : points) {
+    if (!point.ok || held_out(point) != held) continue;
+    Instrument instrument;
+    instrument.probe_radius_m = point.rho;
+    instrument.poisson_ratio = correction.poisson_ratio;
+    const CorrectedInverse result = corrected_inverse(point.k, diameters_in_si(point.d, point.d0), point.h, instrument, correction);
+    if (result.status == SampleStatus::outside_correction) {
+      ++errors.outside;
+      continue;
+    }
+    if (result.status != SampleStatus::ok) continue;
+    ++errors.rows;
+    errors.max_p = std::max(errors.max_p, std::abs(result.p / point.p - 1));
+    errors.max_E = std::max(errors.max_E, std::abs(result.E / point.E - 1));
+    errors.max_closed_p = std::max(errors.max_closed_p, std::abs(result.closed_form_p / point.p - 1));
+    errors.max_closed_E = std::max(errors.max_closed_E, std::abs(result.closed_form_E / point.E - 1));
+  }
+  return errors;
+}
+
+std::string percent(double fraction) { return format_double(std::round(fraction * 1e4) / 1e2) + " %"; }
+
+void print(std::string_view name, const Errors& errors) {
+  std::cout << name << ": " << errors.rows << " rows (" << errors.outside << " outside the fitted region); largest error "
+            << "corrected p " << percent(errors.max_p) << ", E " << percent(errors.max_E) << "; closed form p "
+            << percent(errors.max_closed_p) << ", E " << percent(errors.max_closed_E) << "\n";
+}
+
+}  // namespace
+
+int run_fit_correction(const Arguments& arguments) {
+  std::string training = "src/correction/training.csv", out = "src/correction/shipped_correction.inc";
+  bool force = false;
+  po::options_description described("options");
+  described.add_options()
+      ("training", po::value(&training), "finite-element training data (default src/correction/training.csv, written by "
+                                         "tools/fe-correction/generate-training)")
+      ("out", po::value(&out), "the correction as C++ text (default src/correction/shipped_correction.inc; rebuild "
+                               "the engine to use it)")
+      ("force", po::bool_switch(&force), "overwrite --out if it exists");
+  po::variables_map values;
+  if (!parse_arguments(arguments, "fit-correction", usage,
+                       "Fits fidelity corrected: two quadratic polynomials in the logarithms of the measured groups\n"
+                       "d/d0 - 1, h/d0, rho/d0 and F_top/(k d0), correcting the closed form's E and the far field's p/E to\n"
+                       "the finite-element inverse (src/correction/README.md). Fits the rows whose index is not a\n"
+                       "multiple of 5 plus 4, reports the largest errors in p and E on them and on the held-out rows,\n"
+                       "next to the plain closed form's, and writes the correction for the model options the data\n"
+                       "were made with (the finite-element defaults: law log, substrate on, bending on, L = 100 um,\n"
+                       "probe 10 um behind the apex, window 0.4-4 uN, nu = 0.2).",
+                       described, {}, values)) {
+    return 0;
+  }
+  const Overwrite overwrite = force ? Overwrite::allow : Overwrite::refuse;
+  check_can_write(out, overwrite);
+  const std::vector<TrainingPoint> points = read_training_csv(training);
+  const Correction correction = fit_correction(points, ShellFeOptions{}, Instrument{}.poisson_ratio);
+  print("fitted", errors_of(points, correction, false));
+  print("held out", errors_of(points, correction, true));
+  write_file_atomically(out, correction_source(correction), overwrite);
+  std::cout << "wrote " << out << " (" << correction.training_points << " fitted rows)\n";
+  return 0;
+}
+
+}  // namespace growthuq::cli

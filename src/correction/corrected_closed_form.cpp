@@ -1,0 +1,225 @@
+// The corrected closed form: evaluation (closed form, far field, two polynomials) and the
+// least-squares fit that makes it. src/correction/README.md states the model.
+#include "growthuq/correction/corrected_closed_form.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include <Eigen/Dense>
+
+#include "fe/far_field.hpp"
+#include "fe/shell_fe_problem.hpp"
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+
+namespace growthuq {
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// The quadratic basis at z: 1, z_0..z_3, then z_i z_j for i <= j.
+std::array<double, correction_terms> basis(const std::array<double, correction_groups>& z) {
+  std::array<double, correction_terms> phi{};
+  std::size_t t = 0;
+  phi[t++] = 1.0;
+  for (std::size_t i = 0; i < correction_groups; ++i) phi[t++] = z[i];
+  for (std::size_t i = 0; i < correction_groups; ++i) {
+    for (std::size_t j = i; j < correction_groups; ++j) phi[t++] = z[i] * z[j];
+  }
+  return phi;
+}
+
+double polynomial(const std::array<double, correction_terms>& coefficients, const std::array<double, correction_terms>& phi) {
+  double sum = 0.0;
+  for (std::size_t t = 0; t < correction_terms; ++t) sum += coefficients[t] * phi[t];
+  return sum;
+}
+
+// ln(groups) scaled onto [-1, 1] over the training box; false when outside it.
+bool scaled(const std::array<double, correction_groups>& log_groups, const Correction& correction,
+            std::array<double, correction_groups>& z) {
+  for (std::size_t i = 0; i < correction_groups; ++i) {
+    const double low = correction.low[i], high = correction.high[i];
+    if (!(log_groups[i] >= low && log_groups[i] <= high)) return false;
+    z[i] = (2.0 * log_groups[i] - low - high) / (high - low);
+  }
+  return true;
+}
+
+std::string um(double si) { return format_double(si * 1e6); }
+
+}  // namespace
+
+std::array<double, correction_groups> correction_log_groups(double k_tube, const TubeDiameters& diameters, double h,
+                                                            double probe_radius, const Correction& correction) {
+  return {std::log(diameters.strain), std::log(h / diameters.d0), std::log(probe_radius / diameters.d0),
+          std::log(correction.force_window[1] / (k_tube * diameters.d0))};
+}
+
+void require_fitted_for(const Correction& correction, const ShellFeOptions& options, const Instrument& instrument,
+                        std::string_view location) {
+  const auto refuse = [&](std::string_view key, const std::string& value, const std::string& fitted) {
+    throw_bad_value(location, key, value,
+                    fitted + ", the value fidelity corrected was fitted for (src/correction/README.md; "
+                             "another value needs fidelity shell_fe, or a correction refitted with growthuq fit-correction)");
+  };
+  if (options.geometry != ShellFeGeometry::tube) refuse("geometry", std::string(to_string(options.geometry)), "tube");
+  if (options.law != correction.law) refuse("law", std::string(to_string(options.law)), std::string(to_string(correction.law)));
+  if (options.substrate != correction.substrate) refuse("substrate", options.substrate ? "on" : "off", correction.substrate ? "on" : "off");
+  if (options.bending != correction.bending) refuse("bending", options.bending ? "on" : "off", correction.bending ? "on" : "off");
+  if (std::abs(options.tube_length - correction.tube_length) > 1e-9 * correction.tube_length) {
+    refuse("tube_length_um", um(options.tube_length), um(correction.tube_length));
+  }
+  if (std::abs(options.probe_distance - correction.probe_distance) > 1e-9 * correction.tube_length) {
+    refuse("probe_distance_um", um(options.probe_distance), um(correction.probe_distance));
+  }
+  for (std::size_t end = 0; end < 2; ++end) {
+    if (std::abs(options.force_window[end] - correction.force_window[end]) > 1e-9 * correction.force_window[1]) {
+      refuse("force_window_uN", um(options.force_window[0]) + "," + um(options.force_window[1]),
+             um(correction.force_window[0]) + "," + um(correction.force_window[1]));
+    }
+  }
+  if (std::abs(instrument.poisson_ratio - correction.poisson_ratio) > 1e-12) {
+    refuse("poisson_ratio", format_double(instrument.poisson_ratio), format_double(correction.poisson_ratio));
+  }
+}
+
+CorrectedInverse corrected_inverse(double k_measured, const TubeDiameters& diameters, double h,
+                                   const Instrument& instrument, const Correction& correction) noexcept {
+  CorrectedInverse result;
+  const TurgorResult turgor = invert_turgor(k_measured, diameters, instrument);
+  const ModulusResult modulus =
+      turgor.status == SampleStatus::ok ? invert_modulus(turgor.p, diameters, h) : ModulusResult{nan, nan, nan, turgor.status};
+  if (modulus.status != SampleStatus::ok) {
+    result.status = modulus.status;
+    result.p = result.E = nan;
+    return result;
+  }
+  result.closed_form_p = turgor.p;
+  result.closed_form_E = modulus.E;
+  const double k_tube = tube_stiffness(k_measured, instrument);
+  std::array<double, correction_groups> z{};
+  if (!scaled(correction_log_groups(k_tube, diameters, h, instrument.probe_radius_m, correction), correction, z)) {
+    result.status = SampleStatus::outside_correction;
+    result.p = result.E = nan;
+    return result;
+  }
+  const fe::FarFieldInverse far = fe::far_field_inverse(fe::to_far_field_law(correction.law), diameters.lambda,
+                                                        h / diameters.d0, instrument.poisson_ratio);
+  if (far.status != fe::FarFieldInverseStatus::ok) {
+    result.status = SampleStatus::no_inflation_state;
+    result.p = result.E = nan;
+    return result;
+  }
+  const std::array<double, correction_terms> phi = basis(z);
+  result.E = modulus.E * std::exp(polynomial(correction.modulus, phi));
+  result.p = result.E * far.pressure_over_E * std::exp(polynomial(correction.pressure_ratio, phi));
+  return result;
+}
+
+CorrectedTurgorModulus::CorrectedTurgorModulus(const Instrument& instrument, const ShellFeOptions& options,
+                                               std::string_view location, const Correction& correction)
+    : instrument_(instrument), correction_(correction) {
+  validate(instrument_, location);
+  if (correction_.training_points == 0) {
+    throw InputError(std::string(location), "fidelity corrected: this build holds no fitted correction "
+                                            "(src/correction/shipped_correction.inc; growthuq fit-correction writes it)");
+  }
+  require_fitted_for(correction_, options, instrument_, location);
+}
+
+void CorrectedTurgorModulus::evaluate(SampleBlock& block) const {
+  const std::span<const double> k = std::as_const(block).column("k");
+  const std::span<const double> d = std::as_const(block).column("d");
+  const std::span<const double> d0 = std::as_const(block).column("d0");
+  const std::span<const double> h = std::as_const(block).column("h");
+  const std::span<const double> strain =
+      block.has("hoop_strain") ? std::as_const(block).column("hoop_strain") : std::span<const double>();
+  const std::span<double> p = block.add_column("p");
+  const std::span<double> E = block.add_column("E");
+  const std::span<SampleStatus> status = block.status();
+  for (std::size_t i = 0; i < block.size(); ++i) {
+    if (status[i] != SampleStatus::ok) continue;
+    const TubeDiameters diameters = strain.empty() ? diameters_in_si(d[i], d0[i]) : TubeDiameters{d[i], d0[i], 1.0 + strain[i], strain[i]};
+    if (!(std::isfinite(h[i]) && h[i] > 0.0)) {
+      status[i] = SampleStatus::invalid_input;
+      continue;
+    }
+    const CorrectedInverse result = corrected_inverse(k[i], diameters, h[i], instrument_, correction_);
+    if (result.status != SampleStatus::ok) {
+      status[i] = result.status;
+      continue;
+    }
+    p[i] = result.p;
+    E[i] = result.E;
+  }
+}
+
+Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOptions& options, double poisson_ratio) {
+  Correction correction;
+  correction.law = options.law;
+  correction.substrate = options.substrate;
+  correction.bending = options.bending;
+  correction.tube_length = options.tube_length;
+  correction.probe_distance = options.probe_distance;
+  correction.force_window = options.force_window;
+  correction.poisson_ratio = poisson_ratio;
+  Instrument instrument;
+  instrument.poisson_ratio = poisson_ratio;
+
+  // Per fitting row: ln groups, and the two targets ln(E/E_cf), ln((p/E)/(p/E)_far).
+  std::vector<std::array<double, correction_groups>> groups;
+  std::vector<double> modulus_target, ratio_target;
+  for (const TrainingPoint& point : points) {
+    if (!point.ok || held_out(point)) continue;
+    instrument.probe_radius_m = point.rho;
+    const TubeDiameters diameters = diameters_in_si(point.d, point.d0);
+    const TurgorResult turgor = invert_turgor(point.k, diameters, instrument);
+    if (turgor.status != SampleStatus::ok) continue;
+    const ModulusResult modulus = invert_modulus(turgor.p, diameters, point.h);
+    const fe::FarFieldInverse far = fe::far_field_inverse(fe::to_far_field_law(options.law), diameters.lambda,
+                                                          point.h / point.d0, poisson_ratio);
+    if (modulus.status != SampleStatus::ok || far.status != fe::FarFieldInverseStatus::ok) continue;
+    groups.push_back(correction_log_groups(point.k, diameters, point.h, point.rho, correction));
+    modulus_target.push_back(std::log(point.E / modulus.E));
+    ratio_target.push_back(std::log(point.p / point.E / far.pressure_over_E));
+  }
+  const std::size_t rows = groups.size();
+  if (rows < 2 * correction_terms) {
+    throw InputError("fit-correction", std::to_string(rows) + " usable fitting rows: expected at least " +
+                                           std::to_string(2 * correction_terms) + " (twice the polynomial's " +
+                                           std::to_string(correction_terms) + " terms)");
+  }
+  for (std::size_t i = 0; i < correction_groups; ++i) {
+    correction.low[i] = correction.high[i] = groups[0][i];
+    for (const auto& row : groups) {
+      correction.low[i] = std::min(correction.low[i], row[i]);
+      correction.high[i] = std::max(correction.high[i], row[i]);
+    }
+  }
+  Eigen::MatrixXd design(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(correction_terms));
+  Eigen::VectorXd modulus(static_cast<Eigen::Index>(rows)), ratio(static_cast<Eigen::Index>(rows));
+  for (std::size_t r = 0; r < rows; ++r) {
+    std::array<double, correction_groups> z{};
+    scaled(groups[r], correction, z);
+    const auto phi = basis(z);
+    for (std::size_t t = 0; t < correction_terms; ++t) design(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(t)) = phi[t];
+    modulus(static_cast<Eigen::Index>(r)) = modulus_target[r];
+    ratio(static_cast<Eigen::Index>(r)) = ratio_target[r];
+  }
+  // Householder QR with column pivoting: the least-squares solution without forming the normal
+  // equations (whose condition number is the square of the design's).
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design);
+  const Eigen::VectorXd modulus_coefficients = qr.solve(modulus);
+  const Eigen::VectorXd ratio_coefficients = qr.solve(ratio);
+  for (std::size_t t = 0; t < correction_terms; ++t) {
+    correction.modulus[t] = modulus_coefficients(static_cast<Eigen::Index>(t));
+    correction.pressure_ratio[t] = ratio_coefficients(static_cast<Eigen::Index>(t));
+  }
+  correction.training_points = static_cast<int>(rows);
+  return correction;
+}
+
+}  // namespace growthuq

@@ -1,0 +1,91 @@
+// The correction's data: the training CSV it is fitted from, the C++ text `growthuq
+// fit-correction` writes, and the shipped correction compiled from that text.
+#include <array>
+#include <cstdio>
+#include <string>
+
+#include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
+#include "growthuq/correction/corrected_closed_form.hpp"
+#include "growthuq/io/csv.hpp"
+
+namespace growthuq {
+namespace {
+
+std::string number(double value) {
+  std::array<char, 40> text{};
+  std::snprintf(text.data(), text.size(), "%.17g", value);
+  return text.data();
+}
+
+template <std::size_t N>
+std::string list(const std::array<double, N>& values) {
+  std::string text = "{";
+  for (std::size_t i = 0; i < N; ++i) text += (i ? ", " : "") + number(values[i]);
+  return text + "}";
+}
+
+}  // namespace
+
+const Correction& shipped_correction() {
+  static const Correction correction = [] {
+    Correction c;
+#include "shipped_correction.inc"
+    return c;
+  }();
+  return correction;
+}
+
+std::vector<TrainingPoint> read_training_csv(const std::string& path) {
+  const CsvTable table = read_csv(path);
+  const std::size_t index = table.column_index("index"), status = table.column_index("status");
+  const std::array<std::size_t, 7> columns{table.column_index("p_MPa"), table.column_index("E_MPa"), table.column_index("h_nm"),
+                                           table.column_index("d0_um"), table.column_index("rho_um"),
+                                           table.column_index("k_N_per_m"), table.column_index("d_um")};
+  const std::array<double, 7> to_si{1e6, 1e6, 1e-9, 1e-6, 1e-6, 1.0, 1e-6};
+  std::vector<TrainingPoint> points;
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const std::vector<std::string>& row = table.rows[r];
+    TrainingPoint point;
+    point.index = static_cast<int>(parse_count(row[index], table.row_location(r), "index", 0, 1000000));
+    point.ok = row[status] == "ok";
+    std::array<double, 7> values{};
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const std::string& cell = row[columns[c]];
+      if (cell.empty() && c >= 5 && !point.ok) continue;  // k and d are empty when the simulation failed
+      values[c] = parse_double(cell, table.row_location(r), table.header[columns[c]]);
+      if (!(values[c] > 0)) throw_bad_value(table.row_location(r), table.header[columns[c]], cell, "a positive number");
+      values[c] *= to_si[c];
+    }
+    point.p = values[0];
+    point.E = values[1];
+    point.h = values[2];
+    point.d0 = values[3];
+    point.rho = values[4];
+    point.k = values[5];
+    point.d = values[6];
+    points.push_back(point);
+  }
+  return points;
+}
+
+std::string correction_source(const Correction& c) {
+  std::string text =
+      "// Written by `growthuq fit-correction` from src/correction/training.csv: do not edit by hand\n"
+      "// (src/correction/README.md says how to regenerate it). The body of shipped_correction().\n";
+  text += "c.law = ShellFeLaw::" + std::string(c.law == ShellFeLaw::hencky ? "hencky" : "saint_venant_kirchhoff") + ";\n";
+  text += "c.substrate = " + std::string(c.substrate ? "true" : "false") + ";\n";
+  text += "c.bending = " + std::string(c.bending ? "true" : "false") + ";\n";
+  text += "c.tube_length = " + number(c.tube_length) + ";\n";
+  text += "c.probe_distance = " + number(c.probe_distance) + ";\n";
+  text += "c.force_window = " + list(c.force_window) + ";\n";
+  text += "c.poisson_ratio = " + number(c.poisson_ratio) + ";\n";
+  text += "c.low = " + list(c.low) + ";\n";
+  text += "c.high = " + list(c.high) + ";\n";
+  text += "c.modulus = " + list(c.modulus) + ";\n";
+  text += "c.pressure_ratio = " + list(c.pressure_ratio) + ";\n";
+  text += "c.training_points = " + std::to_string(c.training_points) + ";\n";
+  return text;
+}
+
+}  // namespace growthuq
