@@ -30,11 +30,18 @@ std::string joined(const std::vector<std::string>& items) {
   return text;
 }
 
-std::string_view correlation_text(const PreparedLine& line) {
+// The physics correlation is always the closed form's: it draws 1e4 tubes through the forward
+// model, seconds for the finite-element model each (campaigns/README.md, "Fidelity").
+std::string correlation_text(const Campaign& campaign, const PreparedLine& line) {
   switch (line.campaign_line.correlation) {
     case CorrelationSource::none: return "independent";
     case CorrelationSource::file: return "rank correlation from a matrix file";
-    case CorrelationSource::physics: return "rank correlation from the forward thin-shell model";
+    case CorrelationSource::physics:
+      return campaign.fidelity_of(line.campaign_line) == Fidelity::closed_form
+                 ? "rank correlation from the forward thin-shell model"
+                 : "rank correlation from the forward thin-shell model (not the line's fidelity " +
+                       std::string(to_string(campaign.fidelity_of(line.campaign_line))) +
+                       ": its forward model is too slow for the correlation's draws)";
   }
   return "";
 }
@@ -71,7 +78,7 @@ void print_plan(const PreparedCampaign& prepared, const RunFootprint& footprint,
     std::cout << "  " << source.name << ": "
               << (source.raw_path.empty() ? "distributions " + source.distributions_path : "fitted from raw data " + source.raw_path)
               << "\n    samples " << (variables.empty() ? std::string("nothing") : joined(variables)) << "; "
-              << correlation_text(line) << "\n    models " << (models.empty() ? std::string("none") : joined(models))
+              << correlation_text(c, line) << "\n    models " << (models.empty() ? std::string("none") : joined(models))
               << (source.fidelity ? " (fidelity " + std::string(to_string(*source.fidelity)) + ")" : std::string()) << "\n";
   }
   const auto raw_lines = std::count_if(prepared.lines().begin(), prepared.lines().end(),

@@ -110,7 +110,7 @@ TEST_CASE("each mistake is one error naming file and line") {
   CHECK(error_of(replaced(valid, "lines/m1.ini", "lines/missing.ini")).starts_with(file + ":16: distributions = 'lines/missing.ini': expected an existing file"));
   CHECK(error_of(replaced(valid, "reference_line = wt", "reference_line = col0")) == file + ": [growth] reference_line = 'col0': expected one of the campaign's lines");
   CHECK(error_of(replaced(valid, "[line m1]", "[line  wt]")) == file + ":15: line 'wt' repeats");
-  CHECK(error_of(replaced(valid, "[growth]", "[grow]")) == file + ":9: unknown section [grow] (expected [campaign], [instrument], [growth], [physics_correlation], [data_uncertainty] or [line NAME])");
+  CHECK(error_of(replaced(valid, "[growth]", "[grow]")) == file + ":9: unknown section [grow] (expected [campaign], [instrument], [growth], [physics_correlation], [data_uncertainty], [shell_fe] or [line NAME])");
   CHECK(error_of(replaced(valid, "reference_line = wt\n", "")) == file + ": output v needs [growth] reference_line: the line whose experimental growth rate calibrates kappa");
   CHECK(error_of(replaced(valid, "[instrument]\nprobe_radius_um = 0.5\n", "")) == file + ": no [instrument] section: probe_radius_um is required (it dominates turgor)");
   CHECK(error_of(valid + "[physics_correlation]\np_MPa = 0.8:0.1\n") == file + ":19: p_MPa = '0.8:0.1': expected a range 'low:high' with 0 < low < high");

@@ -38,7 +38,7 @@ TEST_CASE("growthuq check prints the plan and writes nothing") {
   const CliOutcome check = run_cli("check " + small + " --out planned", scratch.root);
   REQUIRE(check.exit_code == 0);
   CHECK(check.err.empty());
-  CHECK(check.out.rfind("campaign 'small' (" + small + "): 2 lines x 200 samples, seed 11, fidelity thin_shell\n", 0) == 0);
+  CHECK(check.out.rfind("campaign 'small' (" + small + "): 2 lines x 200 samples, seed 11, fidelity closed_form\n", 0) == 0);
   CHECK(check.out.find("outputs: p, E, eta, v\n") != std::string::npos);
   // Run order: the reference line (wild_type) first when v is an output, then file order.
   const std::size_t wild_type = check.out.find("  wild_type: distributions ");

@@ -4,19 +4,22 @@
 // evaluator and for the chain; tools/bench/bench-evaluators builds and runs it. --block-size B
 // instead runs the chain block by block (B samples each), as a Monte Carlo driver would;
 // --checked yes runs each evaluator through evaluate_checked, as a campaign does (the cost of
-// checking the declarations).
+// checking the declarations); --fidelity corrected replaces turgor and modulus by the corrected
+// closed form (src/correction/README.md).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <random>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "growthuq/core/error.hpp"
+#include "growthuq/correction/corrected_closed_form.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/growth/growth_rate.hpp"
 #include "growthuq/growth/viscosity.hpp"
@@ -34,6 +37,7 @@ struct Options {
   std::uint64_t seed = 2022;
   std::uint64_t block_size = 0;  // 0: all samples in one SampleBlock
   bool checked = false;          // through evaluate_checked
+  bool corrected = false;        // fidelity corrected instead of closed_form
 };
 
 Options parse(int argc, char** argv) {
@@ -53,9 +57,12 @@ Options parse(int argc, char** argv) {
     } else if (flag == "--checked") {
       if (value != "yes" && value != "no") throw_bad_value("bench_evaluators", flag, value, "yes or no");
       options.checked = value == "yes";
+    } else if (flag == "--fidelity") {
+      if (value != "closed_form" && value != "corrected") throw_bad_value("bench_evaluators", flag, value, "closed_form or corrected");
+      options.corrected = value == "corrected";
     } else {
       throw InputError("bench_evaluators",
-                       "unknown option " + flag + " (--samples, --repeats, --seed, --block-size, --checked)");
+                       "unknown option " + flag + " (--samples, --repeats, --seed, --block-size, --checked, --fidelity)");
     }
   }
   return options;
@@ -126,8 +133,13 @@ int main(int argc, char** argv) try {
   const ThinShellModulus modulus;
   const ViscosityEvaluator viscosity;
   const GrowthEvaluator growth({.p0 = 0.05e6, .kappa = 1.0});
-  const Evaluator* chain[] = {&turgor, &modulus, &viscosity, &growth};
-  constexpr std::size_t stages = std::size(chain);
+  std::vector<const Evaluator*> chain{&turgor, &modulus, &viscosity, &growth};
+  std::optional<CorrectedTurgorModulus> corrected;
+  if (options.corrected) {
+    corrected.emplace(shell, ShellFeOptions{}, "bench_evaluators");
+    chain = {&*corrected, &viscosity, &growth};
+  }
+  const std::size_t stages = chain.size();
 
   // CPU seconds per stage per repeat, and wall seconds per repeat. Repeat 1 includes
   // allocating and first touching the output columns (as a campaign's single pass would);
@@ -151,12 +163,13 @@ int main(int argc, char** argv) try {
     wall[r] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   }
 
-  std::size_t counts[9] = {};
+  constexpr int codes = static_cast<int>(last_sample_status) + 1;
+  std::size_t counts[codes] = {};
   for (const SampleBlock& block : blocks) {
     for (SampleStatus status : block.status()) ++counts[static_cast<int>(status)];
   }
   std::printf("statuses:");
-  for (int s = 0; s < 9; ++s) {
+  for (int s = 0; s < codes; ++s) {
     if (counts[s] > 0) {
       std::printf(" %s %zu", std::string(to_string(static_cast<SampleStatus>(s))).c_str(), counts[s]);
     }

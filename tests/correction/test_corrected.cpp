@@ -1,0 +1,135 @@
+// Fidelity corrected (src/correction/README.md): the shipped correction is what its training
+// data give; on the held-out finite-element tubes (never fitted) p and E are within 2 % of the
+// finite-element values; one held-out tube through the finite-element inverse itself confirms
+// that a training row stands for an inverse; the domain and the closed form's statuses; the
+// evaluator agrees with the per-tube function.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "growthuq/correction/corrected_closed_form.hpp"
+#include "growthuq/fe/indentation.hpp"
+
+using namespace growthuq;
+
+namespace {
+
+std::vector<TrainingPoint> shipped_training() {
+  return read_training_csv(std::string(GROWTHUQ_SOURCE_DIR) + "/src/correction/training.csv");
+}
+
+Instrument instrument_of(const TrainingPoint& point) {
+  Instrument instrument;
+  instrument.probe_radius_m = point.rho;
+  instrument.poisson_ratio = 0.2;
+  return instrument;
+}
+
+}  // namespace
+
+TEST_CASE("the shipped correction is the fit of the shipped training data") {
+  const Correction refit = fit_correction(shipped_training(), ShellFeOptions{}, 0.2);
+  const Correction& shipped = shipped_correction();
+  CHECK(shipped.training_points == refit.training_points);
+  CHECK(shipped.training_points >= 2 * static_cast<int>(correction_terms));
+  for (std::size_t t = 0; t < correction_terms; ++t) {
+    CAPTURE(t);
+    CHECK(shipped.modulus[t] == doctest::Approx(refit.modulus[t]).epsilon(1e-12).scale(1.0));
+    CHECK(shipped.pressure_ratio[t] == doctest::Approx(refit.pressure_ratio[t]).epsilon(1e-12).scale(1.0));
+  }
+  for (std::size_t g = 0; g < correction_groups; ++g) {
+    CHECK(shipped.low[g] == doctest::Approx(refit.low[g]).epsilon(1e-14));
+    CHECK(shipped.high[g] == doctest::Approx(refit.high[g]).epsilon(1e-14));
+  }
+}
+
+TEST_CASE("held-out finite-element tubes: corrected p and E within 2 %, where the closed form misses by far more") {
+  int inside = 0;
+  double worst_p = 0, worst_E = 0, worst_closed_E = 0;
+  for (const TrainingPoint& point : shipped_training()) {
+    if (!point.ok || !held_out(point)) continue;
+    const CorrectedInverse result =
+        corrected_inverse(point.k, diameters_in_si(point.d, point.d0), point.h, instrument_of(point), shipped_correction());
+    if (result.status == SampleStatus::outside_correction) continue;  // beyond the fitted tubes' range
+    REQUIRE(result.status == SampleStatus::ok);
+    ++inside;
+    CAPTURE(point.index);
+    CHECK(result.p == doctest::Approx(point.p).epsilon(0.02));
+    CHECK(result.E == doctest::Approx(point.E).epsilon(0.02));
+    worst_p = std::max(worst_p, std::abs(result.p / point.p - 1));
+    worst_E = std::max(worst_E, std::abs(result.E / point.E - 1));
+    worst_closed_E = std::max(worst_closed_E, std::abs(result.closed_form_E / point.E - 1));
+  }
+  MESSAGE("held-out tubes inside the fitted range: ", inside, "; worst corrected p ", worst_p, ", E ", worst_E,
+          "; worst closed-form E ", worst_closed_E);
+  CHECK(inside >= 10);
+  CHECK(worst_closed_E > 0.2);  // what the correction is for
+}
+
+TEST_CASE("a training row is one finite-element inverse: a held-out tube inverted by the model itself") {
+  // The first held-out tube with a value, through invert_indentation at the default mesh (the
+  // mesh the training data were made at): the forward run's p and E back within 0.3 %.
+  for (const TrainingPoint& point : shipped_training()) {
+    if (!point.ok || !held_out(point)) continue;
+    const ShellFeInverse inverse = invert_indentation({point.k, point.h, point.d, point.d0}, instrument_of(point), ShellFeOptions{});
+    REQUIRE(inverse.status == ShellFeStatus::ok);
+    CHECK(inverse.pressure == doctest::Approx(point.p).epsilon(3e-3));
+    CHECK(inverse.young == doctest::Approx(point.E).epsilon(3e-3));
+    return;
+  }
+  FAIL("no held-out tube with a value");
+}
+
+TEST_CASE("outside the fitted range no value; the closed form's statuses pass through") {
+  const Correction& correction = shipped_correction();
+  Instrument instrument;
+  instrument.probe_radius_m = 0.4e-6;
+  const double d0 = 5.3e-6, h = 180e-9;
+  // A tube in the middle of the range: a value.
+  const TubeDiameters middle = diameters_in_si(1.18 * d0, d0);
+  const double k = 3.0;
+  const CorrectedInverse ok = corrected_inverse(k, middle, h, instrument, correction);
+  REQUIRE(ok.status == SampleStatus::ok);
+  CHECK(ok.p > 0);
+  // Each group pushed beyond its range: outside_correction, NaN values.
+  CHECK(corrected_inverse(k, diameters_in_si(1.9 * d0, d0), h, instrument, correction).status == SampleStatus::outside_correction);
+  CHECK(corrected_inverse(k, middle, 20e-9, instrument, correction).status == SampleStatus::outside_correction);
+  CHECK(corrected_inverse(1000.0, middle, h, instrument, correction).status == SampleStatus::outside_correction);
+  Instrument big_probe = instrument;
+  big_probe.probe_radius_m = 5e-6;
+  const CorrectedInverse outside = corrected_inverse(k, middle, h, big_probe, correction);
+  CHECK(outside.status == SampleStatus::outside_correction);
+  CHECK(std::isnan(outside.p));
+  // The closed form's own: no stretch, a stiffer tube than the sensor.
+  CHECK(corrected_inverse(k, diameters_in_si(d0, d0), h, instrument, correction).status == SampleStatus::lambda_not_above_one);
+  Instrument soft_sensor = instrument;
+  soft_sensor.sensor_stiffness_N_per_m = 2.0;
+  CHECK(corrected_inverse(k, middle, h, soft_sensor, correction).status == SampleStatus::stiffness_at_sensor_limit);
+}
+
+TEST_CASE("the evaluator gives the per-tube function's values and statuses, and checks its declaration") {
+  Instrument instrument;
+  instrument.probe_radius_m = 0.4e-6;
+  const CorrectedTurgorModulus evaluator(instrument, ShellFeOptions{}, "test");
+  const std::vector<double> k{3.0, 2.5, 3.0, 4.0}, d{6.2e-6, 6.0e-6, 5.0e-6, 6.4e-6}, d0{5.3e-6, 5.1e-6, 5.3e-6, 5.4e-6},
+      h{180e-9, 160e-9, 180e-9, -1.0};
+  SampleBlock block(4);
+  block.set_column("k", k);
+  block.set_column("d", d);
+  block.set_column("d0", d0);
+  block.set_column("h", h);
+  evaluate_checked(evaluator, block);
+  for (std::size_t i = 0; i < 3; ++i) {
+    CAPTURE(i);
+    const CorrectedInverse expected = corrected_inverse(k[i], diameters_in_si(d[i], d0[i]), h[i], instrument, shipped_correction());
+    CHECK(block.status()[i] == expected.status);
+    if (expected.status == SampleStatus::ok) {
+      CHECK(block.column("p")[i] == expected.p);
+      CHECK(block.column("E")[i] == expected.E);
+    }
+  }
+  CHECK(block.status()[2] == SampleStatus::lambda_not_above_one);
+  CHECK(block.status()[3] == SampleStatus::invalid_input);
+}
