@@ -416,6 +416,10 @@ void apply_overrides(Campaign& campaign, const CampaignOverrides& overrides) {
   if (overrides.seed) campaign.seed = *overrides.seed;
   if (overrides.output_dir) campaign.output_dir = *overrides.output_dir;
   if (overrides.formats) campaign.formats = parse_formats(*overrides.formats, "command line", "--formats");
+  if (overrides.fidelity) {
+    campaign.fidelity = parse_fidelity(*overrides.fidelity, "command line", "--fidelity");
+    for (CampaignLine& line : campaign.lines) line.fidelity.reset();
+  }
   if (overrides.lines) {
     std::vector<CampaignLine> selected;
     for (const std::string& name : split_list(*overrides.lines, "command line", "--lines")) {

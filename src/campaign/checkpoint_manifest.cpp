@@ -140,6 +140,7 @@ std::string format_manifest(const CheckpointManifest& manifest) {
   if (o.seed) add_line(text, "override_seed", std::to_string(*o.seed));
   if (o.lines) add_line(text, "override_lines", *o.lines);
   if (o.formats) add_line(text, "override_formats", *o.formats);
+  if (o.fidelity) add_line(text, "override_fidelity", *o.fidelity);
   if (o.output_dir) add_line(text, "override_output_dir", *o.output_dir);
   for (const FileFingerprint& input : manifest.inputs) {
     add_line(text, "input", hex16(input.checksum) + " " + std::to_string(input.bytes) + " " + input.path);
@@ -189,6 +190,8 @@ CheckpointManifest parse_manifest(const std::string& text, const std::string& pa
       o.lines = value;
     } else if (key == "override_formats") {
       o.formats = value;
+    } else if (key == "override_fidelity") {
+      o.fidelity = value;
     } else if (key == "override_output_dir") {
       o.output_dir = value;
     } else if (key == "input") {

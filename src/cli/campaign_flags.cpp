@@ -10,7 +10,9 @@ void CampaignFlags::declare(po::options_description& options) {
       ("seed", po::value(&seed), "campaign seed, 0 to 2^64 - 1 (overrides [campaign] seed)")
       ("out", po::value(&out), "output directory (overrides [campaign] output_dir)")
       ("lines", po::value(&lines), "comma-separated subset of the campaign's lines (keep the reference line)")
-      ("formats", po::value(&formats), "csv, hdf5 or csv,hdf5 (summary.csv is always written)");
+      ("formats", po::value(&formats), "csv, hdf5 or csv,hdf5 (summary.csv is always written)")
+      ("fidelity", po::value(&fidelity), "closed_form, corrected or shell_fe: every line's model of turgor and modulus "
+                                         "(overrides [campaign] fidelity and the lines' own)");
 }
 
 CampaignOverrides CampaignFlags::overrides(const po::variables_map& values, std::string_view location) const {
@@ -20,6 +22,10 @@ CampaignOverrides CampaignFlags::overrides(const po::variables_map& values, std:
   if (values.count("out")) overrides.output_dir = out;
   if (values.count("lines")) overrides.lines = lines;
   if (values.count("formats")) overrides.formats = formats;
+  if (values.count("fidelity")) {
+    parse_fidelity(fidelity, location, "--fidelity");  // refused here, before anything is read
+    overrides.fidelity = fidelity;
+  }
   return overrides;
 }
 

@@ -1,5 +1,5 @@
 // The command-line flags that change what a campaign runs (--samples, --seed, --out, --lines,
-// --formats), shared by `growthuq run` and `growthuq check` so that a check sees the campaign
+// --formats, --fidelity), shared by `growthuq run` and `growthuq check` so that a check sees the campaign
 // exactly as the run with the same flags would.
 #pragma once
 
@@ -17,14 +17,15 @@ struct CampaignFlags {
   std::string out;
   std::string lines;
   std::string formats;
+  std::string fidelity;
 
-  // Adds the five flags to `options`.
+  // Adds the six flags to `options`.
   void declare(po::options_description& options);
   // The flags given, validated (errors located at `location`, "growthuq run").
   CampaignOverrides overrides(const po::variables_map& values, std::string_view location) const;
 };
 
 // The names of the flags above, for commands that refuse them in some mode (run --resume).
-inline constexpr std::string_view campaign_flag_names[] = {"samples", "seed", "out", "lines", "formats"};
+inline constexpr std::string_view campaign_flag_names[] = {"samples", "seed", "out", "lines", "formats", "fidelity"};
 
 }  // namespace growthuq::cli

@@ -12,6 +12,7 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/correction/corrected_closed_form.hpp"
+#include "growthuq/io/csv.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "options.hpp"
 
@@ -19,7 +20,7 @@ namespace growthuq::cli {
 namespace {
 
 constexpr std::string_view command = "growthuq fit-correction";
-constexpr std::string_view usage = "[--training FILE] [--out FILE.inc] [--force]";
+constexpr std::string_view usage = "[--training FILE] [--out FILE.inc] [--errors FILE.csv] [--force]";
 
 struct Errors {
   int rows = 0, outside = 0;
@@ -50,6 +51,25 @@ Errors errors_of(const std::vector<TrainingPoint>& points, const Correction& cor
   return errors;
 }
 
+// Per training row with a value: its groups, the finite-element p and E, and both fidelities'
+// values and relative errors (for the plot of tools/fe-correction/plot-errors).
+std::string errors_table(const std::vector<TrainingPoint>& points, const Correction& correction) {
+  CsvWriter writer({"index", "held_out", "lambda", "h_over_d", "rho_over_d", "p_fe_MPa", "E_fe_MPa", "p_closed_form_MPa",
+                    "E_closed_form_MPa", "p_corrected_MPa", "E_corrected_MPa", "status"});
+  for (const TrainingPoint& point : points) {
+    if (!point.ok) continue;
+    Instrument instrument;
+    instrument.probe_radius_m = point.rho;
+    instrument.poisson_ratio = correction.poisson_ratio;
+    const CorrectedInverse r = corrected_inverse(point.k, diameters_in_si(point.d, point.d0), point.h, instrument, correction);
+    const auto mpa = [](double pa) { return std::isfinite(pa) ? format_double(pa * 1e-6) : std::string(); };
+    writer.add_row({std::to_string(point.index), held_out(point) ? "1" : "0", format_double(point.d / point.d0),
+                    format_double(point.h / point.d), format_double(point.rho / point.d), mpa(point.p), mpa(point.E),
+                    mpa(r.closed_form_p), mpa(r.closed_form_E), mpa(r.p), mpa(r.E), std::string(to_string(r.status))});
+  }
+  return writer.text();
+}
+
 std::string percent(double fraction) { return format_double(std::round(fraction * 1e4) / 1e2) + " %"; }
 
 void print(std::string_view name, const Errors& errors) {
@@ -61,7 +81,7 @@ void print(std::string_view name, const Errors& errors) {
 }  // namespace
 
 int run_fit_correction(const Arguments& arguments) {
-  std::string training = "src/correction/training.csv", out = "src/correction/shipped_correction.inc";
+  std::string training = "src/correction/training.csv", out = "src/correction/shipped_correction.inc", errors;
   bool force = false;
   po::options_description described("options");
   described.add_options()
@@ -69,7 +89,9 @@ int run_fit_correction(const Arguments& arguments) {
                                          "tools/fe-correction/generate-training)")
       ("out", po::value(&out), "the correction as C++ text (default src/correction/shipped_correction.inc; rebuild "
                                "the engine to use it)")
-      ("force", po::bool_switch(&force), "overwrite --out if it exists");
+      ("errors", po::value(&errors), "also write per training row the finite-element, closed-form and corrected p and "
+                                     "E (CSV, for tools/fe-correction/plot-errors)")
+      ("force", po::bool_switch(&force), "overwrite --out and --errors if they exist");
   po::variables_map values;
   if (!parse_arguments(arguments, "fit-correction", usage,
                        "Fits fidelity corrected: two quadratic polynomials in the logarithms of the measured groups\n"
@@ -84,12 +106,17 @@ int run_fit_correction(const Arguments& arguments) {
   }
   const Overwrite overwrite = force ? Overwrite::allow : Overwrite::refuse;
   check_can_write(out, overwrite);
+  if (!errors.empty()) check_can_write(errors, overwrite);
   const std::vector<TrainingPoint> points = read_training_csv(training);
   const Correction correction = fit_correction(points, ShellFeOptions{}, Instrument{}.poisson_ratio);
   print("fitted", errors_of(points, correction, false));
   print("held out", errors_of(points, correction, true));
   write_file_atomically(out, correction_source(correction), overwrite);
   std::cout << "wrote " << out << " (" << correction.training_points << " fitted rows)\n";
+  if (!errors.empty()) {
+    write_file_atomically(errors, errors_table(points, correction), overwrite);
+    std::cout << "wrote " << errors << "\n";
+  }
   return 0;
 }
 

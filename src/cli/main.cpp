@@ -1,5 +1,6 @@
 // growthuq: the command-line front end. It only dispatches to a subcommand and turns
 // errors into one line on stderr and a non-zero exit.
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstdio>
@@ -53,8 +54,10 @@ int finish_stdout(const std::string& command, int status) {
 void print_usage(std::ostream& out) {
   out << "usage: growthuq <command> [options]   (growthuq help <command> for its options)\n\n"
          "Monte Carlo uncertainty quantification of pollen tube mechanics and growth.\n\ncommands:\n";
+  std::size_t width = 0;  // the longest name, plus two spaces
+  for (const Command& command : commands) width = std::max(width, command.name.size() + 2);
   for (const Command& command : commands) {
-    const std::string start = "  " + std::string(command.name) + std::string(12 - command.name.size(), ' ');
+    const std::string start = "  " + std::string(command.name) + std::string(width - command.name.size(), ' ');
     out << growthuq::cli::wrapped_help(command.summary, start, std::string(start.size(), ' ')) << "\n";
   }
 }

@@ -121,6 +121,7 @@ struct CampaignOverrides {
   std::optional<std::string> output_dir{};
   std::optional<std::string> lines{};    // comma-separated subset of the file's lines
   std::optional<std::string> formats{};  // "csv", "hdf5" or "csv,hdf5"
+  std::optional<std::string> fidelity{};  // every line's fidelity (lines' own included)
 };
 
 // --lines leaving no raw-data line also leaves no default bootstrap (a stated replicates stays).
