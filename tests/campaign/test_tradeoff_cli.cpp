@@ -54,12 +54,14 @@ TEST_CASE("growthuq tradeoff writes one row per count x line x quantity, the sum
   CHECK(table.header == std::vector<std::string>{"fidelity", "samples", "seconds", "line", "quantity", "unit", "n", "median",
                                                  "iqr", "median_ci_low", "median_ci_high", "reference_median",
                                                  "reference_iqr", "median_error_pct", "iqr_error_pct",
-                                                 "median_error_over_ci_half_width"});
+                                                 "median_error_over_ci_half_width", "fe_reference_median",
+                                                 "fe_reference_iqr", "fe_median_error_pct", "fe_iqr_error_pct"});
   REQUIRE(table.rows.size() == 3 * 2 * 4);  // counts x lines (wild_type, pme48) x quantities (p, E, eta, v)
   std::map<std::string, std::set<std::string>> seconds_of_count;
   for (const auto& row : table.rows) {
-    CHECK(row[0] == "analytic");
+    CHECK(row[0] == "closed_form");  // the campaign's fidelity, the default of --fidelities
     CHECK(std::stod(row[2]) > 0);
+    for (std::size_t fe_cell = 16; fe_cell < 20; ++fe_cell) CHECK(row[fe_cell].empty());  // no shell_fe run
     seconds_of_count[row[1]].insert(row[2]);
   }
   CHECK(seconds_of_count.size() == 3);
