@@ -9,6 +9,7 @@
 
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/io/csv.hpp"
+#include "campaign/tradeoff_worst.hpp"
 
 namespace growthuq {
 namespace {
@@ -36,15 +37,8 @@ double error_over_half_width(double median, double reference, double ci_low, dou
 
 std::string number_cell(double value) { return std::isfinite(value) ? format_double(value) : std::string(); }
 
-// NaN (undefined) ranks above every number so that the worst case is never hidden.
-bool worse(double candidate, double current) {
-  if (std::isnan(current)) return false;
-  if (std::isnan(candidate)) return true;
-  return candidate > current;
-}
-
 void keep_worst(TradeoffWorst& worst, double value, const TradeoffRow& row, bool first) {
-  if (first || worse(value, worst.value)) worst = {value, row.line, row.quantity};
+  keep_worst_error(worst, value, row.line, row.quantity, first);
 }
 
 // The smallest of 1, 2, 5 x 10^k that is >= `count`.
@@ -58,6 +52,14 @@ std::size_t round_up_to_1_2_5(double count) {
   }
 }
 
+// The summary of `line` and `quantity` in `run`; nullptr when the run lacks it.
+const QuantitySummary* find_summary(const TradeoffRun& run, const std::string& line, const std::string& quantity) {
+  for (const QuantitySummary& s : run.summaries) {
+    if (s.line == line && s.quantity == quantity) return &s;
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 std::vector<TradeoffRow> tradeoff_rows(std::span<const TradeoffRun> runs) {
@@ -67,6 +69,8 @@ std::vector<TradeoffRow> tradeoff_rows(std::span<const TradeoffRun> runs) {
     const TradeoffRun*& reference = references[run.fidelity];
     if (reference == nullptr || run.samples > reference->samples) reference = &run;
   }
+  const auto fe_reference = references.find(std::string(shell_fe_label));
+  const TradeoffRun* fe_reference_run = fe_reference == references.end() ? nullptr : fe_reference->second;
   std::vector<TradeoffRow> rows;
   for (const TradeoffRun& run : runs) {
     const TradeoffRun& reference_run = *references.at(run.fidelity);
@@ -83,19 +87,18 @@ std::vector<TradeoffRow> tradeoff_rows(std::span<const TradeoffRun> runs) {
       row.iqr = s.iqr;
       row.median_ci_low = s.median_ci_low;
       row.median_ci_high = s.median_ci_high;
-      row.reference_median = not_a_number;
-      row.reference_iqr = not_a_number;
-      for (const QuantitySummary& r : reference_run.summaries) {
-        if (r.line == s.line && r.quantity == s.quantity) {
-          row.reference_median = r.median;
-          row.reference_iqr = r.iqr;
-          break;
-        }
-      }
+      const QuantitySummary* reference = find_summary(reference_run, s.line, s.quantity);
+      row.reference_median = reference ? reference->median : not_a_number;
+      row.reference_iqr = reference ? reference->iqr : not_a_number;
       row.median_error_pct = relative_error_pct(row.median, row.reference_median);
       row.iqr_error_pct = relative_error_pct(row.iqr, row.reference_iqr);
       row.median_error_over_ci_half_width =
           error_over_half_width(row.median, row.reference_median, row.median_ci_low, row.median_ci_high);
+      const QuantitySummary* fe = fe_reference_run ? find_summary(*fe_reference_run, s.line, s.quantity) : nullptr;
+      row.fe_reference_median = fe ? fe->median : not_a_number;
+      row.fe_reference_iqr = fe ? fe->iqr : not_a_number;
+      row.fe_median_error_pct = relative_error_pct(row.median, row.fe_reference_median);
+      row.fe_iqr_error_pct = relative_error_pct(row.iqr, row.fe_reference_iqr);
       rows.push_back(std::move(row));
     }
   }
@@ -105,7 +108,8 @@ std::vector<TradeoffRow> tradeoff_rows(std::span<const TradeoffRun> runs) {
 std::vector<std::string> tradeoff_csv_header() {
   return {"fidelity", "samples", "seconds", "line", "quantity", "unit", "n", "median", "iqr", "median_ci_low",
           "median_ci_high", "reference_median", "reference_iqr", "median_error_pct", "iqr_error_pct",
-          "median_error_over_ci_half_width"};
+          "median_error_over_ci_half_width", "fe_reference_median", "fe_reference_iqr", "fe_median_error_pct",
+          "fe_iqr_error_pct"};
 }
 
 std::string tradeoff_csv_text(std::span<const TradeoffRow> rows) {
@@ -115,7 +119,9 @@ std::string tradeoff_csv_text(std::span<const TradeoffRow> rows) {
                     std::to_string(r.n), number_cell(r.median), number_cell(r.iqr), number_cell(r.median_ci_low),
                     number_cell(r.median_ci_high), number_cell(r.reference_median), number_cell(r.reference_iqr),
                     number_cell(r.median_error_pct), number_cell(r.iqr_error_pct),
-                    number_cell(r.median_error_over_ci_half_width)});
+                    number_cell(r.median_error_over_ci_half_width), number_cell(r.fe_reference_median),
+                    number_cell(r.fe_reference_iqr), number_cell(r.fe_median_error_pct),
+                    number_cell(r.fe_iqr_error_pct)});
   }
   return writer.text();
 }
@@ -174,7 +180,7 @@ TradeoffVerdict judge_tradeoff(std::span<const TradeoffRow> rows, std::string_vi
 
   if (!verdict.smallest_meeting_target) {
     const TradeoffCount& last = verdict.counts[reference_index - 1];
-    const bool iqr_worse = worse(last.iqr_error_pct.value, last.median_error_pct.value);
+    const bool iqr_worse = worse_error(last.iqr_error_pct.value, last.median_error_pct.value);
     verdict.remaining_error_pct = iqr_worse ? last.iqr_error_pct : last.median_error_pct;
     verdict.remaining_statistic = iqr_worse ? "IQR" : "median";
     const double remaining = verdict.remaining_error_pct.value;

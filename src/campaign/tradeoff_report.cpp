@@ -1,9 +1,13 @@
-// The readable side of the trade: what `growthuq tradeoff` prints on stdout.
+// The readable side of the trade: what `growthuq tradeoff` prints on stdout (per-fidelity
+// verdicts, then the runs against the finite-element reference).
 #include "growthuq/campaign/tradeoff.hpp"
+#include "growthuq/campaign/tradeoff_choice.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <string>
+
+#include "campaign/tradeoff_worst.hpp"
 
 namespace growthuq {
 namespace {
@@ -99,7 +103,47 @@ std::string reference_precision(const TradeoffVerdict& v) {
          " measure the reference's own noise. Add a larger count to --samples-list.";
 }
 
+// "closed_form at 20 samples per line (0.0012 s per campaign)"
+std::string run_name(const TradeoffRunAgainstFe& run) {
+  return run.fidelity + " at " + std::to_string(run.samples) + " samples per line (" + seconds_text(run.seconds) +
+         " per campaign)";
+}
+
+std::string choice_answer(const TradeoffChoice& c) {
+  const std::string target = significant(c.target_pct, 3) + " %";
+  const std::string reference = "the " + std::to_string(c.reference_samples) + "-sample shell_fe reference";
+  std::string text = "against " + reference + ", target " + target + ": ";
+  if (c.cheapest) {
+    return text + "the cheapest run is " + run_name(c.runs[*c.cheapest]) + ": its median and IQR of every line and " +
+           "quantity are within " + target + " of the finite-element model's.";
+  }
+  if (!c.closest) return text + "no run besides the reference to compare (add a fidelity to --fidelities).";
+  const TradeoffRunAgainstFe& closest = c.runs[*c.closest];
+  const bool iqr_worse = worse_error(closest.iqr_error_pct.value, closest.median_error_pct.value);
+  const TradeoffWorst& worst = iqr_worse ? closest.iqr_error_pct : closest.median_error_pct;
+  const std::string value = std::isnan(worst.value) ? "undefined" : significant(worst.value, 3) + " %";
+  return text + "no run has every median and IQR within it. Closest is " + run_name(closest) +
+         ", whose largest error is " + value + " (" + (iqr_worse ? "IQR" : "median") + " of " + where(worst) + ").";
+}
+
 }  // namespace
+
+std::string format_tradeoff_choice(const TradeoffChoice& choice) {
+  constexpr std::size_t fidelity_width = 13, count_width = 12, seconds_width = 10, error_width = 31;
+  std::string text = padded("fidelity", fidelity_width) + right_aligned("samples/line", count_width) +
+                     right_aligned("seconds", seconds_width) + "   " + padded("worst median error vs FE", error_width) +
+                     "worst IQR error vs FE\n";
+  for (const TradeoffRunAgainstFe& run : choice.runs) {
+    text += padded(run.fidelity, fidelity_width) + right_aligned(std::to_string(run.samples), count_width) +
+            right_aligned(significant(run.seconds, 3), seconds_width) + "   ";
+    if (run.is_reference) {
+      text += padded("reference", error_width) + "reference\n";
+      continue;
+    }
+    text += padded(worst_cell(run.median_error_pct, " %"), error_width) + worst_cell(run.iqr_error_pct, " %") + "\n";
+  }
+  return text + "\n" + wrapped(choice_answer(choice));
+}
 
 std::string format_tradeoff_report(const TradeoffVerdict& verdict) {
   constexpr std::size_t count_width = 12, seconds_width = 10, error_width = 31;

@@ -50,30 +50,48 @@ class SummaryObserver final : public RunObserver {
 
 std::string fidelity_label(Fidelity fidelity) { return std::string(to_string(fidelity)); }
 
-std::vector<TradeoffRun> run_tradeoff(const Campaign& campaign, std::span<const std::size_t> sample_counts, Pool& pool,
+Campaign campaign_at_fidelity(Campaign campaign, Fidelity fidelity) {
+  campaign.fidelity = fidelity;
+  for (CampaignLine& line : campaign.lines) line.fidelity.reset();
+  return campaign;
+}
+
+std::vector<TradeoffRun> run_tradeoff(const Campaign& campaign, std::span<const TradeoffSeries> series, Pool& pool,
                                       ProgressMode progress, std::ostream& log) {
   using Clock = std::chrono::steady_clock;
   std::vector<TradeoffRun> runs;
-  // Prepared once: line files or raw-data fits and correlation targets do not depend on the
-  // sample count, and refitting raw data (seconds) at every count would swamp the small runs'
-  // times, which are what the trade is about.
-  Campaign first = campaign;
-  if (!sample_counts.empty()) first.samples = sample_counts.front();
-  PreparedCampaign prepared(std::move(first), pool, progress, log);
-  for (const std::size_t samples : sample_counts) {
-    if (progress != ProgressMode::none) log << "tradeoff: " << samples << " samples per line\n" << std::flush;
-    prepared.set_samples(samples);
-    const Clock::time_point start = Clock::now();
-    SummaryObserver observer(prepared, progress, log);
-    run_campaign_lines(prepared, pool, observer);
-    TradeoffRun run;
-    run.fidelity = fidelity_label(campaign.fidelity);
-    run.samples = samples;
-    run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    run.summaries = observer.take_summaries();
-    runs.push_back(std::move(run));
+  for (const TradeoffSeries& one : series) {
+    if (one.sample_counts.empty()) continue;
+    // Prepared once per fidelity: line files or raw-data fits and correlation targets do not
+    // depend on the sample count, and refitting raw data (seconds) at every count would swamp
+    // the small runs' times, which are what the trade is about.
+    Campaign first = campaign_at_fidelity(campaign, one.fidelity);
+    first.samples = one.sample_counts.front();
+    PreparedCampaign prepared(std::move(first), pool, progress, log);
+    const std::string label = fidelity_label(one.fidelity);
+    for (const std::size_t samples : one.sample_counts) {
+      if (progress != ProgressMode::none) {
+        log << "tradeoff: " << label << ", " << samples << " samples per line\n" << std::flush;
+      }
+      prepared.set_samples(samples);
+      const Clock::time_point start = Clock::now();
+      SummaryObserver observer(prepared, progress, log);
+      run_campaign_lines(prepared, pool, observer);
+      TradeoffRun run;
+      run.fidelity = label;
+      run.samples = samples;
+      run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      run.summaries = observer.take_summaries();
+      runs.push_back(std::move(run));
+    }
   }
   return runs;
+}
+
+std::vector<TradeoffRun> run_tradeoff(const Campaign& campaign, std::span<const std::size_t> sample_counts, Pool& pool,
+                                      ProgressMode progress, std::ostream& log) {
+  const TradeoffSeries series{campaign.fidelity, {sample_counts.begin(), sample_counts.end()}};
+  return run_tradeoff(campaign, std::span<const TradeoffSeries>(&series, 1), pool, progress, log);
 }
 
 }  // namespace growthuq

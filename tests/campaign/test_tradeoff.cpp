@@ -45,9 +45,9 @@ QuantitySummary summary(const std::string& line, double median, double iqr, doub
 //        b: median 4, IQR 2 (both 0 %), CI [3, 5] -> ratio 0
 std::vector<TradeoffRun> hand_runs() {
   return {
-      {"analytic", 10, 0.5, {summary("a", 2.5, 1.5, nan, nan, 5), summary("b", 4, 2, 3, 5)}},
-      {"analytic", 100, 1.5, {summary("a", 2.0625, 1.0625, 2.03125, 2.09375), summary("b", 3.75, 1.75, 3.5, 4.0)}},
-      {"analytic", 1000, 9.0, {summary("a", 2, 1, 1.875, 2.125), summary("b", 4, 2, 3.875, 4.125)}},
+      {"closed_form", 10, 0.5, {summary("a", 2.5, 1.5, nan, nan, 5), summary("b", 4, 2, 3, 5)}},
+      {"closed_form", 100, 1.5, {summary("a", 2.0625, 1.0625, 2.03125, 2.09375), summary("b", 3.75, 1.75, 3.5, 4.0)}},
+      {"closed_form", 1000, 9.0, {summary("a", 2, 1, 1.875, 2.125), summary("b", 4, 2, 3.875, 4.125)}},
   };
 }
 
@@ -93,21 +93,26 @@ TEST_CASE("tradeoff rows: errors against the largest run and against the CI half
     CHECK(rows[r].median_error_over_ci_half_width == 0);
   }
 
+  // Without a shell_fe run there is no finite-element reference: its four cells are empty.
+  CHECK(std::isnan(a10.fe_reference_median));
+  CHECK(std::isnan(a10.fe_median_error_pct));
+
   // tradeoff.csv: the fixed columns, shortest round-trip numbers, undefined cells empty.
   const std::string csv = tradeoff_csv_text(rows);
   CHECK(csv.starts_with("fidelity,samples,seconds,line,quantity,unit,n,median,iqr,median_ci_low,median_ci_high,"
-                        "reference_median,reference_iqr,median_error_pct,iqr_error_pct,median_error_over_ci_half_width\n"
-                        "analytic,10,0.5,a,p,MPa,5,2.5,1.5,,,2,1,25,50,\n"
-                        "analytic,10,0.5,b,p,MPa,100,4,2,3,5,4,2,0,0,0\n"
-                        "analytic,100,1.5,a,p,MPa,100,2.0625,1.0625,2.03125,2.09375,2,1,3.125,6.25,2\n"));
+                        "reference_median,reference_iqr,median_error_pct,iqr_error_pct,median_error_over_ci_half_width,"
+                        "fe_reference_median,fe_reference_iqr,fe_median_error_pct,fe_iqr_error_pct\n"
+                        "closed_form,10,0.5,a,p,MPa,5,2.5,1.5,,,2,1,25,50,,,,,\n"
+                        "closed_form,10,0.5,b,p,MPa,100,4,2,3,5,4,2,0,0,0,,,,\n"
+                        "closed_form,100,1.5,a,p,MPa,100,2.0625,1.0625,2.03125,2.09375,2,1,3.125,6.25,2,,,,\n"));
 }
 
 TEST_CASE("tradeoff rows: a zero reference has no relative error; each fidelity has its own reference") {
   const std::vector<TradeoffRun> runs{
-      {"analytic", 10, 1, {summary("a", 0, 0.5, 0, 0.25, 100, "v"), summary("b", 0.25, 1, 0, 0.5, 100, "v")}},
-      {"fem", 10, 50, {summary("a", 3, 1, 2, 4)}},
-      {"fem", 40, 200, {summary("a", 2, 1, 1.5, 2.5)}},
-      {"analytic", 100, 8, {summary("a", 0, 0.5, 0, 0.125, 100, "v"), summary("b", 0, 1, 0, 0.125, 100, "v")}},
+      {"closed_form", 10, 1, {summary("a", 0, 0.5, 0, 0.25, 100, "v"), summary("b", 0.25, 1, 0, 0.5, 100, "v")}},
+      {"corrected", 10, 50, {summary("a", 3, 1, 2, 4)}},
+      {"corrected", 40, 200, {summary("a", 2, 1, 1.5, 2.5)}},
+      {"closed_form", 100, 8, {summary("a", 0, 0.5, 0, 0.125, 100, "v"), summary("b", 0, 1, 0, 0.125, 100, "v")}},
   };
   const std::vector<TradeoffRow> rows = tradeoff_rows(runs);
   REQUIRE(rows.size() == 6);
@@ -115,12 +120,12 @@ TEST_CASE("tradeoff rows: a zero reference has no relative error; each fidelity 
   CHECK(rows[0].median_error_over_ci_half_width == 0);
   CHECK(std::isnan(rows[1].median_error_pct));         // 0.25 against 0: undefined
   CHECK(rows[1].median_error_over_ci_half_width == 1);  // 0.25 / 0.25 is still defined
-  CHECK(rows[2].reference_median == 2);                 // fem against the largest fem run
+  CHECK(rows[2].reference_median == 2);                 // corrected against the largest corrected run
   CHECK(rows[2].median_error_pct == 50);
   CHECK(rows[2].median_error_over_ci_half_width == 1);
 
   // An undefined error never meets a target, and it is the worst of its count.
-  const TradeoffVerdict verdict = judge_tradeoff(rows, "analytic", 50);
+  const TradeoffVerdict verdict = judge_tradeoff(rows, "closed_form", 50);
   REQUIRE(verdict.counts.size() == 2);
   CHECK_FALSE(verdict.counts[0].meets_target);
   CHECK(std::isnan(verdict.counts[0].median_error_pct.value));
@@ -137,7 +142,7 @@ TEST_CASE("tradeoff rows: a zero reference has no relative error; each fidelity 
 TEST_CASE("tradeoff verdict: worst errors per count, the smallest count meeting a target, and none") {
   const std::vector<TradeoffRow> rows = tradeoff_rows(hand_runs());
 
-  const TradeoffVerdict tight = judge_tradeoff(rows, "analytic", 10);
+  const TradeoffVerdict tight = judge_tradeoff(rows, "closed_form", 10);
   REQUIRE(tight.counts.size() == 3);
   CHECK(tight.reference_samples == 1000);
   const TradeoffCount& at100 = tight.counts[1];
@@ -164,26 +169,26 @@ TEST_CASE("tradeoff verdict: worst errors per count, the smallest count meeting 
   CHECK(tight.reference_ci_half_width_pct.line == "a");
   CHECK_FALSE(tight.reference_precise_enough);
 
-  const TradeoffVerdict middle = judge_tradeoff(rows, "analytic", 15);
+  const TradeoffVerdict middle = judge_tradeoff(rows, "closed_form", 15);
   CHECK(middle.smallest_meeting_target == std::optional<std::size_t>(100));  // 10 fails (25 %, 50 %)
   CHECK_FALSE(middle.counts[0].meets_target);
   CHECK(middle.counts[1].meets_target);
   CHECK_FALSE(middle.reference_precise_enough);  // 6.25 > 15 / 4
 
-  const TradeoffVerdict loose = judge_tradeoff(rows, "analytic", 60);
+  const TradeoffVerdict loose = judge_tradeoff(rows, "closed_form", 60);
   CHECK(loose.smallest_meeting_target == std::optional<std::size_t>(10));
   CHECK(loose.reference_precise_enough);  // 6.25 <= 60 / 4
 
   // The limit is strict: an error equal to the target does not meet it.
-  CHECK(judge_tradeoff(rows, "analytic", 12.5).smallest_meeting_target == std::nullopt);
+  CHECK(judge_tradeoff(rows, "closed_form", 12.5).smallest_meeting_target == std::nullopt);
 
   // A small count that passes by chance while a larger one fails is not offered.
   const std::vector<TradeoffRun> lucky{
-      {"analytic", 10, 1, {summary("a", 1.015625, 1, 0.5, 1.5)}},
-      {"analytic", 100, 2, {summary("a", 1.0625, 1, 0.75, 1.25)}},
-      {"analytic", 1000, 3, {summary("a", 1, 1, 0.9375, 1.0625)}},
+      {"closed_form", 10, 1, {summary("a", 1.015625, 1, 0.5, 1.5)}},
+      {"closed_form", 100, 2, {summary("a", 1.0625, 1, 0.75, 1.25)}},
+      {"closed_form", 1000, 3, {summary("a", 1, 1, 0.9375, 1.0625)}},
   };
-  const TradeoffVerdict by_chance = judge_tradeoff(tradeoff_rows(lucky), "analytic", 5);
+  const TradeoffVerdict by_chance = judge_tradeoff(tradeoff_rows(lucky), "closed_form", 5);
   CHECK(by_chance.counts[0].meets_target);
   CHECK_FALSE(by_chance.counts[1].meets_target);
   CHECK_FALSE(by_chance.smallest_meeting_target.has_value());
@@ -215,7 +220,7 @@ TEST_CASE("tradeoff of a real campaign: errors fall with n and the median's 95 %
     REQUIRE(runs[i].summaries.size() == rows_per_run);
   }
   const std::vector<TradeoffRow> rows = tradeoff_rows(runs);
-  const TradeoffVerdict verdict = judge_tradeoff(rows, "analytic", 1);
+  const TradeoffVerdict verdict = judge_tradeoff(rows, "closed_form", 1);
   // The worst median and IQR errors fall from 100 to 1e4 samples (not necessarily at every
   // step: each count is an independent design).
   CHECK(verdict.counts[2].median_error_pct.value < verdict.counts[0].median_error_pct.value);

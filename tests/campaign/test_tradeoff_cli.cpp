@@ -1,6 +1,6 @@
 // `growthuq tradeoff` through the built CLI: the CSV's columns and rows, its summaries checked
 // against `growthuq run` at the same sample counts, the default location, refusal to overwrite,
-// and bad options.
+// and bad options (test_tradeoff_fidelity_cli.cpp runs the finite-element axis).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -54,12 +54,14 @@ TEST_CASE("growthuq tradeoff writes one row per count x line x quantity, the sum
   CHECK(table.header == std::vector<std::string>{"fidelity", "samples", "seconds", "line", "quantity", "unit", "n", "median",
                                                  "iqr", "median_ci_low", "median_ci_high", "reference_median",
                                                  "reference_iqr", "median_error_pct", "iqr_error_pct",
-                                                 "median_error_over_ci_half_width"});
+                                                 "median_error_over_ci_half_width", "fe_reference_median",
+                                                 "fe_reference_iqr", "fe_median_error_pct", "fe_iqr_error_pct"});
   REQUIRE(table.rows.size() == 3 * 2 * 4);  // counts x lines (wild_type, pme48) x quantities (p, E, eta, v)
   std::map<std::string, std::set<std::string>> seconds_of_count;
   for (const auto& row : table.rows) {
-    CHECK(row[0] == "analytic");
+    CHECK(row[0] == "closed_form");  // the campaign's fidelity, the default of --fidelities
     CHECK(std::stod(row[2]) > 0);
+    for (std::size_t fe_cell = 16; fe_cell < 20; ++fe_cell) CHECK(row[fe_cell].empty());  // no shell_fe run
     seconds_of_count[row[1]].insert(row[2]);
   }
   CHECK(seconds_of_count.size() == 3);
@@ -101,8 +103,8 @@ TEST_CASE("growthuq tradeoff: default table location, progress, refusal to overw
   INFO(run.err);
   REQUIRE(run.exit_code == 0);
   REQUIRE(fs::is_regular_file(csv));
-  CHECK(run.err.starts_with("tradeoff: 20 samples per line\nwild_type: 20 samples in "));
-  CHECK(run.err.find("tradeoff: 60 samples per line\n") != std::string::npos);
+  CHECK(run.err.starts_with("tradeoff: closed_form, 20 samples per line\nwild_type: 20 samples in "));
+  CHECK(run.err.find("tradeoff: closed_form, 60 samples per line\n") != std::string::npos);
   const std::string first = slurp(csv);
 
   run = run_cli("tradeoff " + campaign_path + " --samples-list 20,60 --quiet --seed 12", scratch.root);
@@ -129,6 +131,17 @@ TEST_CASE("growthuq tradeoff: bad options are one line and exit code 2, before a
       {"--samples-list 1,100", "--samples-list = '1': expected a whole number from 2 to 4294967295"},
       {"--samples-list 100,,1000", "--samples-list = '': expected a whole number from 2 to 4294967295"},
       {"--lines pme48", "keeps the reference line 'wild_type'"},
+      {"--fidelities shell_fe", "--fidelities = 'shell_fe': expected closed_form or corrected; finite-element runs take "
+                                "their own sample counts: --fe-samples-list (e.g. --fe-samples-list 10,50)"},
+      {"--fidelities closed_form,fem", "--fidelities = 'closed_form,fem': expected closed_form or corrected, "
+                                       "comma-separated, each once"},
+      {"--fidelities closed_form,thin_shell", "--fidelities = 'closed_form,thin_shell': expected closed_form or "
+                                              "corrected, comma-separated, each once"},
+      {"--fidelities closed_form,", "--fidelities = 'closed_form,': expected closed_form or corrected, "
+                                     "comma-separated, each once"},
+      {"--fe-samples-list 50,10", "--fe-samples-list = '50,10': expected one or more increasing sample counts for the "
+                                  "shell_fe runs, the largest being the finite-element reference (e.g. 10,50,150)"},
+      {"--fe-samples-list 1", "--fe-samples-list = '1': expected a whole number from 2 to 4294967295"},
   };
   for (const auto& [options, message] : cases) {
     INFO(options);

@@ -700,7 +700,8 @@ def add_relaxation_fixture(path, rng):
 
 TRADE_HEADER = ("fidelity,samples,seconds,line,quantity,unit,n,median,iqr,median_ci_low,"
                 "median_ci_high,reference_median,reference_iqr,median_error_pct,iqr_error_pct,"
-                "median_error_over_ci_half_width")
+                "median_error_over_ci_half_width,fe_reference_median,fe_reference_iqr,"
+                "fe_median_error_pct,fe_iqr_error_pct")
 
 
 TRADE_COUNTS = (100, 300, 1000)
@@ -797,10 +798,10 @@ class RelaxationAndTrade(unittest.TestCase):
                     # A log axis cannot show 0: an error of exactly 0 (the reference line's v
                     # equals its measured median by the kappa calibration) is not drawn.
                     shown = [(n, e) for n, e in zip(samples, expected) if math.isfinite(e) and e > 0]
-                    drawn = one(figure, f"analytic/{line}/{quantity}/{series}")
+                    drawn = one(figure, f"closed_form/{line}/{quantity}/{series}")
                     self.assertTrue(close(drawn.get_xdata(), [n for n, _ in shown]), (line, quantity, series))
                     self.assertTrue(close(drawn.get_ydata(), [e for _, e in shown], 1e-9), (line, quantity, series))
-        seconds = one(figure, "analytic/seconds")
+        seconds = one(figure, "closed_form/seconds")
         by_count = {r["samples"]: r["seconds"] for r in self.trade}
         self.assertTrue(close(seconds.get_xdata(), list(TRADE_COUNTS)))
         self.assertTrue(close(seconds.get_ydata(), [by_count[n] for n in TRADE_COUNTS]))

@@ -1,7 +1,8 @@
 """Reading tradeoff.csv, the table `growthuq tradeoff` writes: one row per sample count x line x
-quantity, with the error of the median and IQR against the largest run (the reference) and the
-95 % confidence interval of the median. Empty cells (e.g. no interval with 5 or fewer samples)
-are NaN."""
+quantity, with the error of the median and IQR against the largest run of the same fidelity
+(the reference), the 95 % confidence interval of the median, and the errors against the
+shell_fe run with the most samples (fe_ columns). Empty cells (e.g. no interval with 5 or fewer
+samples) are NaN."""
 import csv
 import math
 
@@ -11,6 +12,10 @@ TEXT_COLUMNS = ("fidelity", "line", "quantity", "unit")
 NUMBER_COLUMNS = ("samples", "seconds", "n", "median", "iqr", "median_ci_low", "median_ci_high",
                   "reference_median", "reference_iqr", "median_error_pct", "iqr_error_pct",
                   "median_error_over_ci_half_width")
+# Against the finite-element reference (the shell_fe run with the most samples); empty without
+# one, and absent from tables written before the fidelity axis: NaN then.
+OPTIONAL_NUMBER_COLUMNS = ("fe_reference_median", "fe_reference_iqr", "fe_median_error_pct",
+                           "fe_iqr_error_pct")
 
 
 def _number(text, path, row, column):
@@ -49,6 +54,8 @@ def read_tradeoff(path):
         row = {column: cells[column] for column in TEXT_COLUMNS}
         for column in NUMBER_COLUMNS:
             row[column] = _number(cells[column], path, number, column)
+        for column in OPTIONAL_NUMBER_COLUMNS:
+            row[column] = _number(cells.get(column, ""), path, number, column)
         if not (row["samples"] >= 1 and float(row["samples"]).is_integer()):
             raise PlotInputError(f"{path}:{number}: column samples: '{cells['samples']}'; expected "
                                  "a whole number >= 1")

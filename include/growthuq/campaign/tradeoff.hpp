@@ -1,7 +1,10 @@
 // The speed/accuracy trade of a campaign (issue 4, "The trade"): the same campaign run at
-// increasing sample counts, each count's per-line, per-quantity median and IQR compared with
-// those of the run with the most samples, and the smallest count that meets a requested
-// accuracy. Pure functions of the runs' summaries; tradeoff_run.hpp runs the campaign.
+// increasing sample counts and at several fidelities, each count's per-line, per-quantity median
+// and IQR compared with those of the same fidelity's run with the most samples (its sampling
+// convergence) and with the shell_fe run with the most samples (its distance from the
+// finite-element model), and the smallest count that meets a requested accuracy. Pure functions
+// of the runs' summaries; tradeoff_run.hpp runs the campaign, tradeoff_choice.hpp picks the
+// cheapest run against the finite-element reference.
 #pragma once
 
 #include <cstddef>
@@ -17,7 +20,7 @@ namespace growthuq {
 
 // The campaign run once at one sample count per line.
 struct TradeoffRun {
-  std::string fidelity;     // "analytic" (thin-shell models); a finite-element fidelity joins later
+  std::string fidelity;     // to_string(Fidelity): "closed_form", "corrected" or "shell_fe"
   std::size_t samples = 0;  // per line
   double seconds = 0;       // wall time of the campaign's run at this count (not its preparation)
   std::vector<QuantitySummary> summaries;  // the rows summary.csv would hold
@@ -42,11 +45,20 @@ struct TradeoffRow {
   // count's median agrees with the reference within its own 95 % interval. NaN without an
   // interval (n <= 5) or when the interval has zero width and the medians differ.
   double median_error_over_ci_half_width = 0;
+  // The same line and quantity in the shell_fe run with the most samples (the finite-element
+  // reference), and the errors against it as above: how far this fidelity and count are from the
+  // finite-element model. All NaN without a shell_fe run (or when it lacks the line/quantity).
+  double fe_reference_median = 0, fe_reference_iqr = 0;
+  double fe_median_error_pct = 0, fe_iqr_error_pct = 0;
 };
+
+// The fidelity label of the finite-element runs, whose largest run is the fe_ reference.
+inline constexpr std::string_view shell_fe_label = "shell_fe";
 
 // Every run's summaries as rows, runs in the order given, summaries in their order. A row's
 // reference is the summary of the same line and quantity in the run of the same fidelity with
-// the most samples (NaN reference cells when that run lacks it).
+// the most samples (NaN reference cells when that run lacks it); its fe_ reference that of the
+// run labelled shell_fe_label with the most samples.
 std::vector<TradeoffRow> tradeoff_rows(std::span<const TradeoffRun> runs);
 
 // The columns of tradeoff.csv, in order.

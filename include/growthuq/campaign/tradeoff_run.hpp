@@ -1,5 +1,5 @@
-// Running a campaign at several sample counts for the speed/accuracy trade (tradeoff.hpp):
-// once per count, through the same pool (so it works under mpirun too), keeping only the
+// Running a campaign at several fidelities and sample counts for the speed/accuracy trade
+// (tradeoff.hpp): once per fidelity and count, through the same pool (so it works under mpirun too), keeping only the
 // per-line summaries (no samples.csv or results.h5), timed on the coordinator.
 #pragma once
 
@@ -16,17 +16,33 @@
 
 namespace growthuq {
 
-// The fidelity column of tradeoff.csv: "analytic" for the thin-shell models.
+// The fidelity column of tradeoff.csv: to_string(fidelity).
 std::string fidelity_label(Fidelity fidelity);
 
-// Runs `campaign` with `samples` = each of `sample_counts` in turn (its own samples key is not
-// used). The seed is the same for every count, so the designs at different counts are
-// independent Latin hypercube draws (a design depends on seed, line, variable and n). The
-// campaign is prepared once (line files or raw-data fits, physics correlation); a count's
-// seconds are the wall time on the coordinator from its first design to its last line's
-// summaries, without writing any file. Every process
-// calls it; the runs (with summaries) are returned on the coordinator, runs without summaries
-// elsewhere. Progress goes to `log` in `progress` mode, design warnings always.
+// The runs of one fidelity: its sample counts per line, increasing.
+struct TradeoffSeries {
+  Fidelity fidelity = Fidelity::closed_form;
+  std::vector<std::size_t> sample_counts;
+};
+
+// `campaign` with every line at `fidelity`: the trade compares fidelities run by run, so a
+// line's own `fidelity =` override does not apply.
+Campaign campaign_at_fidelity(Campaign campaign, Fidelity fidelity);
+
+// Runs `campaign` at each series' fidelity (campaign_at_fidelity) with `samples` = each of its
+// counts in turn (the campaign's samples key is not used), series in the order given. The seed
+// is the same for every count and fidelity, so the designs at different counts are independent
+// Latin hypercube draws (a design depends on seed, line, variable and n) and two fidelities at
+// the same count evaluate the same samples. The campaign is prepared once per fidelity (line
+// files or raw-data fits, physics correlation, the fidelity's models); a run's seconds are the
+// wall time on the coordinator from its first design to its last line's summaries, without
+// writing any file. Every process calls it; the runs (with summaries) are returned on the
+// coordinator, runs without summaries elsewhere. Progress goes to `log` in `progress` mode,
+// design warnings always.
+std::vector<TradeoffRun> run_tradeoff(const Campaign& campaign, std::span<const TradeoffSeries> series, Pool& pool,
+                                      ProgressMode progress, std::ostream& log);
+
+// One series at the campaign's [campaign] fidelity.
 std::vector<TradeoffRun> run_tradeoff(const Campaign& campaign, std::span<const std::size_t> sample_counts, Pool& pool,
                                       ProgressMode progress, std::ostream& log);
 
