@@ -335,6 +335,9 @@ class LineRun {
       observer_.chunk_done(range);
     };
     const std::size_t chunk_size = campaign_.campaign().chunk_size_of(line.campaign_line);
+    // Finite-element samples take seconds to minutes: none waits in a queue for a busy process.
+    const bool slow_samples = campaign_.campaign().fidelity_of(line.campaign_line) == Fidelity::shell_fe;
+    pool_.set_queued_chunks(slow_samples ? 1 : 3);
     if (journal_ == nullptr) {
       pool_.run(samples_, chunk_size, work, sink);
     } else {

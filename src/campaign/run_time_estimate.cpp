@@ -26,7 +26,7 @@ std::string duration(double seconds) {
 
 double shell_fe_seconds_per_sample(ShellFeMesh mesh) {
   switch (mesh) {
-    case ShellFeMesh::coarse: return 8.0;
+    case ShellFeMesh::coarse: return 4.0;
     case ShellFeMesh::standard: return 40.0;
     case ShellFeMesh::fine: return 160.0;
   }

@@ -3,7 +3,7 @@
 // The analytic fidelities take microseconds per sample and are not estimated here (`growthuq
 // tradeoff` measures them); a shell_fe sample is one finite-element inverse, whose time
 // depends mostly on the mesh level: the stated model below, measured on this project's
-// 2-core machine (src/correction/README.md, "Time per sample").
+// 2-core machine.
 #pragma once
 
 #include <cstddef>
@@ -15,7 +15,11 @@
 namespace growthuq {
 
 // Seconds of one core per shell_fe sample (one inverse: one force curve and up to six
-// inflations) at a mesh level, the median over the Arabidopsis-like training tubes.
+// inflations) at a mesh level, measured on this project's 2-core machine (2026-12-05): coarse
+// 2.6-3.2 s per sample over the five Arabidopsis lines (tools/bench/bench-fe-campaign, failed
+// samples included), rounded up to 4; default 32 s per forward curve, the median over the 86
+// training tubes of src/correction/training.csv, plus the inflations, 40; fine four times that
+// (src/fe/README.md, "Speed": 575 s against 149 s at the test tube).
 double shell_fe_seconds_per_sample(ShellFeMesh mesh);
 
 struct ShellFeTimeEstimate {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <utility>
 
@@ -48,7 +49,13 @@ bool scaled(const std::array<double, correction_groups>& log_groups, const Corre
   return true;
 }
 
-std::string um(double si) { return format_double(si * 1e6); }
+// A length in um (or a force in uN) as typed: 12 significant digits drop the binary residue
+// of the SI conversion (0.4e-6 * 1e6 = 0.39999999999999997).
+std::string um(double si) {
+  std::array<char, 32> text{};
+  std::snprintf(text.data(), text.size(), "%.12g", si * 1e6);
+  return text.data();
+}
 
 }  // namespace
 

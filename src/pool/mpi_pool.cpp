@@ -27,9 +27,6 @@
 namespace growthuq {
 namespace {
 
-// Chunks kept assigned to each worker: enough that a worker still has work while rank 0 is busy
-// with a chunk of its own.
-constexpr int queued_per_worker = 3;
 
 enum Tag : int { assign_tag = 1, result_tag = 2, failure_tag = 3, stop_tag = 4, done_tag = 5, gather_tag = 6 };
 
@@ -207,7 +204,9 @@ class MpiPool final : public Pool {
         }
       }
     };
-    for (int round = 0; round < queued_per_worker; ++round) {
+    // Chunks kept assigned to each worker (Pool::queued_chunks): enough that a worker still has
+    // work while rank 0 is busy with a chunk of its own.
+    for (int round = 0; round < queued_chunks(); ++round) {
       for (int worker = 1; worker < size_; ++worker) assign_next(worker);
     }
 

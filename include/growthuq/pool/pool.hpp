@@ -79,6 +79,13 @@ class Pool {
   // for all of them, so they stop at the same point and nothing waits for a rank that left.
   void stop_when(std::function<int()> request) { stop_request_ = std::move(request); }
 
+  // Chunks each worker keeps assigned ahead of the one it computes (the MPI pool; 3 by default):
+  // a queue hides the coordinator's own chunks when chunks take microseconds, but chunks of
+  // seconds or minutes (finite-element samples) balance best with 1, since a queued chunk can
+  // no longer go to whichever process frees up first. Every process sets the same value.
+  void set_queued_chunks(int chunks) { queued_chunks_ = chunks < 1 ? 1 : chunks; }
+  int queued_chunks() const { return queued_chunks_; }
+
   // Sends `text` from rank 0 to every process (campaign text, so all ranks validate the same
   // input); returns it on every rank.
   virtual std::string broadcast(const std::string& text) = 0;
@@ -109,6 +116,7 @@ class Pool {
 
  private:
   std::function<int()> stop_request_;
+  int queued_chunks_ = 3;
 };
 
 // The chunks of [0, count), in order; the last may be shorter. chunk_size 0 is treated as 1.
