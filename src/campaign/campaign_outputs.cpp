@@ -172,6 +172,7 @@ class OutputObserver final : public RunObserver {
   }
 
   void chunk_done(ChunkRange range) override { progress_.advance(range.end - range.begin); }
+  void chunk_replayed(ChunkRange range) override { progress_.advance_replayed(range.end - range.begin); }
 
   void line_done(const LineResult& result, const std::vector<std::string>& warnings) override {
     LineResult copy = result;

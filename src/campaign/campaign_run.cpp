@@ -322,6 +322,7 @@ class LineRun {
       evaluated->status.resize(samples_);
     }
     const ChunkWork work = [&](ChunkRange range) { return campaign_.evaluate_chunk(line, design, range); };
+    bool replaying = false;  // chunks from the checkpoint: no work, no part of the rate
     const ChunkSink sink = [&](ChunkRange range, std::span<const double> values) {
       const ChunkValues chunk(values, outputs);
       const std::size_t size = range.end - range.begin;
@@ -332,7 +333,11 @@ class LineRun {
         for (std::size_t i = 0; i < size; ++i) out[i] = in[i] / to_si[o];
       }
       for (std::size_t i = 0; i < size; ++i) evaluated->status[range.begin + i] = chunk.status(i);
-      observer_.chunk_done(range);
+      if (replaying) {
+        observer_.chunk_replayed(range);
+      } else {
+        observer_.chunk_done(range);
+      }
     };
     const std::size_t chunk_size = campaign_.campaign().chunk_size_of(line.campaign_line);
     // Finite-element samples take seconds to minutes: none waits in a queue for a busy process.
@@ -341,7 +346,11 @@ class LineRun {
     if (journal_ == nullptr) {
       pool_.run(samples_, chunk_size, work, sink);
     } else {
-      on_coordinator(pool_, [&] { journal_->replay(index, sink); });  // a read error stops every process
+      on_coordinator(pool_, [&] {  // a read error stops every process
+        replaying = true;
+        journal_->replay(index, sink);
+        replaying = false;
+      });
       const ChunkSink record_then_sink = [&](ChunkRange range, std::span<const double> values) {
         journal_->record(index, range, values);
         sink(range, values);

@@ -59,6 +59,11 @@ void Progress::advance(std::size_t samples) {
   draw_bar(false);
 }
 
+void Progress::advance_replayed(std::size_t samples) {
+  replayed_ += samples;
+  advance(samples);
+}
+
 void Progress::line_finished() {
   const double seconds = seconds_between(line_start_, Clock::now());
   if (mode_ == ProgressMode::bar) {
@@ -91,7 +96,7 @@ void Progress::draw_bar(bool force) {
     if (seconds_between(last_draw_, now) < 30.0 || done_ >= total_) return;
     last_draw_ = now;
     const double elapsed = seconds_between(start_, now);
-    const double rate = elapsed > 0 ? static_cast<double>(done_) / elapsed : 0.0;
+    const double rate = elapsed > 0 ? static_cast<double>(done_ - replayed_) / elapsed : 0.0;
     out_ << "progress: " << done_ << "/" << total_ << " samples, line " << line_ << " " << line_done_ << "/"
          << line_samples_ << ", " << rate_text(rate) << " samples/s, about " << duration_text(static_cast<double>(total_ - done_) / rate)
          << " left\n" << std::flush;
@@ -104,7 +109,7 @@ void Progress::draw_bar(bool force) {
   const double fraction = total_ == 0 ? 1.0 : static_cast<double>(done_) / static_cast<double>(total_);
   const int filled = static_cast<int>(fraction * width);
   const double elapsed = seconds_between(start_, now);
-  const double rate = elapsed > 0 ? static_cast<double>(done_) / elapsed : 0.0;
+  const double rate = elapsed > 0 ? static_cast<double>(done_ - replayed_) / elapsed : 0.0;
   const double left = rate > 0 ? static_cast<double>(total_ - done_) / rate : -1.0;
   out_ << "\r\033[K[" << std::string(static_cast<std::size_t>(filled), '#')
        << std::string(static_cast<std::size_t>(width - filled), '.') << "] " << done_ << "/" << total_ << " samples  "

@@ -22,6 +22,8 @@ class Progress {
 
   void line_started(std::string_view line, std::size_t samples);
   void advance(std::size_t samples);
+  // Samples a resumed run took from its checkpoint: done, but not counted in the rate.
+  void advance_replayed(std::size_t samples);
   // Ends the line: clears the bar, or prints "<line>: N samples in T s (R samples/s)".
   void line_finished();
   // The run stopped before the line finished: clears the bar so the next message starts clean.
@@ -35,6 +37,7 @@ class Progress {
   std::ostream& out_;
   std::size_t total_;
   std::size_t done_ = 0;
+  std::size_t replayed_ = 0;  // of done_
   std::string line_;
   std::size_t line_samples_ = 0;
   std::size_t line_done_ = 0;

@@ -32,7 +32,7 @@ struct Errors {
 Errors errors_of(const std::vector<TrainingPoint>& points, const Correction& correction, bool held) {
   Errors errors;
   for (const TrainingPoint& point : points) {
-    if (!point.ok || held_out(point) != held) continue;
+    if (!in_training_envelope(point) || held_out(point) != held) continue;
     Instrument instrument;
     instrument.probe_radius_m = point.rho;
     instrument.poisson_ratio = correction.poisson_ratio;
@@ -57,7 +57,7 @@ std::string errors_table(const std::vector<TrainingPoint>& points, const Correct
   CsvWriter writer({"index", "held_out", "lambda", "h_over_d", "rho_over_d", "p_fe_MPa", "E_fe_MPa", "p_closed_form_MPa",
                     "E_closed_form_MPa", "p_corrected_MPa", "E_corrected_MPa", "status"});
   for (const TrainingPoint& point : points) {
-    if (!point.ok) continue;
+    if (!in_training_envelope(point)) continue;
     Instrument instrument;
     instrument.probe_radius_m = point.rho;
     instrument.poisson_ratio = correction.poisson_ratio;

@@ -180,7 +180,7 @@ Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOp
   std::vector<std::array<double, correction_groups>> groups;
   std::vector<double> modulus_target, ratio_target;
   for (const TrainingPoint& point : points) {
-    if (!point.ok || held_out(point)) continue;
+    if (!in_training_envelope(point) || held_out(point)) continue;
     instrument.probe_radius_m = point.rho;
     const TubeDiameters diameters = diameters_in_si(point.d, point.d0);
     const TurgorResult turgor = invert_turgor(point.k, diameters, instrument);

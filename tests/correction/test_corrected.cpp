@@ -49,7 +49,7 @@ TEST_CASE("held-out finite-element tubes: corrected p and E within 2 %, where th
   int inside = 0;
   double worst_p = 0, worst_E = 0, worst_closed_E = 0;
   for (const TrainingPoint& point : shipped_training()) {
-    if (!point.ok || !held_out(point)) continue;
+    if (!in_training_envelope(point) || !held_out(point)) continue;
     const CorrectedInverse result =
         corrected_inverse(point.k, diameters_in_si(point.d, point.d0), point.h, instrument_of(point), shipped_correction());
     if (result.status == SampleStatus::outside_correction) continue;  // beyond the fitted tubes' range

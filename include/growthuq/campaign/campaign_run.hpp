@@ -125,6 +125,8 @@ class RunObserver {
   virtual ~RunObserver() = default;
   virtual void line_started(const PreparedLine& line, std::size_t samples) = 0;
   virtual void chunk_done(ChunkRange range) = 0;
+  // A chunk a resumed run found in its checkpoint (no work done now): by default as chunk_done.
+  virtual void chunk_replayed(ChunkRange range) { chunk_done(range); }
   // The finished line, v already scaled by the campaign's kappa; `warnings` from its design.
   virtual void line_done(const LineResult& result, const std::vector<std::string>& warnings) = 0;
   // What the run calls: the finished line with its statistics, which all processes computed

@@ -103,6 +103,13 @@ std::vector<TrainingPoint> read_training_csv(const std::string& path);
 // Whether a row is held out of the fit (every fifth index) to test the correction.
 inline bool held_out(const TrainingPoint& point) { return point.index % 5 == 4; }
 
+// The stiffest tube the correction is fitted to and tested on: the physiological range of k is
+// 0.5-10 N/m. The training design's stiffest tubes (k up to 12 N/m, p up to 2.6 MPa: no
+// Arabidopsis tube) pulled the quadratic away from where tubes are (largest held-out error
+// 4.2 % with them, 1.9 % without; src/correction/README.md).
+inline constexpr double correction_max_stiffness = 10.0;  // N/m
+inline bool in_training_envelope(const TrainingPoint& point) { return point.ok && point.k <= correction_max_stiffness; }
+
 // Least-squares fit of both polynomials to the fitting rows (ok and not held out) for the model
 // options the data were made with. InputError when fewer rows than twice the terms remain.
 Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOptions& options, double poisson_ratio);
