@@ -127,6 +127,49 @@ FarFieldInflation far_field_inflation(FarFieldLaw law, double pressure_over_E, d
   return {state.hoop_stretch, state.axial_stretch, state.thickness_stretch, false};
 }
 
+FarFieldTurgidInflation far_field_inflation_to_turgid_thickness(FarFieldLaw law, double pressure_over_E,
+                                                                double h_over_d0, double nu) {
+  if (!(pressure_over_E > 0.0)) return {{1.0, 1.0, 1.0, false}, h_over_d0};
+  const FarFieldState peak = far_field_pressure_maximum(law, nu);
+  // turgid h/d0 at hoop stretch l, minus the target: decreasing on (1, l_peak].
+  struct Target {
+    FarFieldLaw law;
+    double pressure_over_E, h_over_d0, nu;
+  } target{law, pressure_over_E, h_over_d0, nu};
+  const auto excess = [](double l, void* p) {
+    const auto* t = static_cast<const Target*>(p);
+    const FarFieldState state = far_field_state(t->law, l, t->nu);
+    return t->pressure_over_E * state.thickness_stretch / state.pressure_group - t->h_over_d0;
+  };
+  const auto burst = [&] {
+    return FarFieldTurgidInflation{{peak.hoop_stretch, peak.axial_stretch, peak.thickness_stretch, true}, 0.0};
+  };
+  if (excess(peak.hoop_stretch, &target) > 0.0) return burst();
+  // Lower end of the bracket: near l = 1, G ~ c (l - 1), so the turgid thickness there is about
+  // (p/E) / (c (l - 1)); step l - 1 down until it exceeds h (at most 1e-300 away).
+  double low = 1.0 + 0.5 * (peak.hoop_stretch - 1.0);
+  while (excess(low, &target) <= 0.0) {
+    low = 1.0 + 0.5 * (low - 1.0);
+    if (low - 1.0 < 1e-15) return {{1.0, 1.0, 1.0, false}, h_over_d0};  // p/E negligible: no stretch
+  }
+  detail::gsl_errors_return();
+  gsl_function f{excess, &target};
+  std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
+      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), gsl_root_fsolver_free);
+  gsl_root_fsolver_set(solver.get(), &f, low, peak.hoop_stretch);
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    gsl_root_fsolver_iterate(solver.get());
+    if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver.get()), gsl_root_fsolver_x_upper(solver.get()), 0.0,
+                               1e-15) == GSL_SUCCESS) {
+      break;
+    }
+  }
+  const FarFieldState state = far_field_state(law, gsl_root_fsolver_root(solver.get()), nu);
+  if (!(state.thickness_stretch > 0.0)) return burst();
+  return {{state.hoop_stretch, state.axial_stretch, state.thickness_stretch, false},
+          pressure_over_E / state.pressure_group};
+}
+
 FarFieldInverse far_field_inverse(FarFieldLaw law, double d_over_d0, double h_over_d0, double nu) {
   FarFieldInverse out;
   if (!std::isfinite(d_over_d0) || !std::isfinite(h_over_d0) || !(d_over_d0 > 0.0) || !(h_over_d0 > 0.0) ||

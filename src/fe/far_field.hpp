@@ -47,6 +47,18 @@ FarFieldState far_field_state(FarFieldLaw law, double hoop_stretch, double nu);
 // still rising there (St-VK).
 FarFieldState far_field_pressure_maximum(FarFieldLaw law, double nu);
 
+// Inflation at a given p/E of a wall whose *turgid* thickness h/d0 is given (h0 unknown): the hoop
+// stretch l on the rising branch of G where h0 = (p/E) / G(l) thins to h, i.e.
+// (p/E) lambda_3(l) / G(l) = h/d0. The left side falls from infinity at l = 1 to its least value
+// at the pressure maximum (G rises, lambda_3 falls), so one bracketed root (GSL Brent) or none:
+// `burst` when even the pressure maximum leaves the wall thicker than h. h0_over_d0 is 0 then.
+struct FarFieldTurgidInflation {
+  FarFieldInflation inflation;
+  double h0_over_d0;
+};
+FarFieldTurgidInflation far_field_inflation_to_turgid_thickness(FarFieldLaw law, double pressure_over_E,
+                                                                double h_over_d0, double nu);
+
 // Inverse: measured turgid d/d0 and turgid h/d0 -> p/E and h0/d0 (h0 = h / lambda_3,
 // p/E = G h0/d0).
 enum class FarFieldInverseStatus {

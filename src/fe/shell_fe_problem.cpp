@@ -61,16 +61,9 @@ FarFieldLaw to_far_field_law(ShellFeLaw law) {
 
 double far_field_unstressed_thickness(ShellFeLaw law, double pressure_over_young, double turgid_thickness,
                                       double poisson) {
-  const FarFieldLaw far_law = to_far_field_law(law);
-  double thickness = turgid_thickness;
-  for (int pass = 0; pass < 100; ++pass) {
-    const FarFieldInflation inflated = far_field_inflation(far_law, pressure_over_young, thickness, poisson);
-    if (inflated.burst || !(inflated.thickness_stretch > 0)) return 0.0;
-    const double next = turgid_thickness / inflated.thickness_stretch;
-    if (std::abs(next - thickness) <= 1e-13 * next) return next;
-    thickness = next;
-  }
-  return 0.0;
+  const FarFieldTurgidInflation inflated =
+      far_field_inflation_to_turgid_thickness(to_far_field_law(law), pressure_over_young, turgid_thickness, poisson);
+  return inflated.inflation.burst ? 0.0 : inflated.h0_over_d0;
 }
 
 void curve_in_si(const ForwardResult& result, double d0, double young, IndentationCurve& curve) {

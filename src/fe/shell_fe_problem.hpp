@@ -23,8 +23,8 @@ ShellFeStatus to_shell_fe_status(FeStatus status);
 MaterialLaw to_material_law(ShellFeLaw law);
 FarFieldLaw to_far_field_law(ShellFeLaw law);
 
-// h0/d0 for a turgid h/d0 at p/E in the far field: h0 = h / lambda3(p/E, h0/d0), a fixed
-// point; 0 when the wall bursts.
+// h0/d0 for a turgid h/d0 at p/E in the far field (far_field_inflation_to_turgid_thickness: a
+// bracketed root on the rising branch of the pressure group); 0 when the wall bursts.
 double far_field_unstressed_thickness(ShellFeLaw law, double pressure_over_young, double turgid_thickness,
                                       double poisson);
 

@@ -147,6 +147,33 @@ TEST_CASE("far field: the inverse is the forward's round trip, and its statuses"
   CHECK(far_field_inverse(FarFieldLaw::hencky, 1.2, 0.03, 0.5).status == FarFieldInverseStatus::invalid_input);
 }
 
+TEST_CASE("far field: inflation to a given turgid thickness inverts the inverse, up to the pressure maximum") {
+  // From (d/d0, turgid h/d0) the inverse gives p/E and h0 without a root; the inflation to the
+  // turgid h at that p/E must find them again, also just below the pressure maximum, where a
+  // fixed point h0 <- h / lambda_3(p/E, h0) started at h0 = h lands beyond the maximum.
+  const double h = 0.145 / 5.35;
+  for (FarFieldLaw law : all_laws) {
+    for (double nu : {0.0, 0.2, 0.4}) {
+      const double peak = far_field_pressure_maximum(law, nu).hoop_stretch;
+      for (double lambda : {1.001, 1.05, 1.2261, 1.4, 1.0 + 0.999 * (std::fmin(peak, 1.6) - 1.0)}) {
+        const FarFieldInverse inverse = far_field_inverse(law, lambda, h, nu);
+        if (inverse.status != FarFieldInverseStatus::ok) continue;  // St-VK's collapsed thickness
+        const FarFieldTurgidInflation forward = far_field_inflation_to_turgid_thickness(law, inverse.pressure_over_E, h, nu);
+        REQUIRE_FALSE(forward.inflation.burst);
+        CHECK(forward.inflation.hoop_stretch == doctest::Approx(lambda).epsilon(1e-10));
+        CHECK(forward.h0_over_d0 == doctest::Approx(inverse.h0_over_d0).epsilon(1e-10));
+      }
+    }
+  }
+  // A wall already thinner than the pressure maximum's at this p/E: burst, h0 = 0.
+  const FarFieldState peak = far_field_pressure_maximum(FarFieldLaw::hencky, 0.2);
+  const double thinnest = 0.01 * peak.thickness_stretch / peak.pressure_group;
+  CHECK(far_field_inflation_to_turgid_thickness(FarFieldLaw::hencky, 0.01, 0.999 * thinnest, 0.2).inflation.burst);
+  CHECK_FALSE(far_field_inflation_to_turgid_thickness(FarFieldLaw::hencky, 0.01, 1.001 * thinnest, 0.2).inflation.burst);
+  // No pressure, no stretch.
+  CHECK(far_field_inflation_to_turgid_thickness(FarFieldLaw::hencky, 0.0, h, 0.2).inflation.hoop_stretch == 1.0);
+}
+
 TEST_CASE("far field: the three laws at the study's stretch (d/d0 = 6.56/5.35, h = 145 nm, nu = 0.2)") {
   // Hencky and cauchy_log share the kinematics (eps_z = kappa eps_t, the same eps_3) and differ
   // only in which stress is Hooke's law of the log strain: Cauchy = Kirchhoff / J, so cauchy_log
