@@ -152,6 +152,14 @@ TEST_CASE("fidelity corrected refuses model options it was not fitted for, namin
   };
   CHECK_THROWS_WITH_AS(models_of("law = stvk\n"),
                        doctest::Contains("law = 'stvk': expected log, the value fidelity corrected was fitted for"), InputError);
+  // By the key, as the file spells it (eval names its flag instead: tests/mechanics/test_cli.cpp).
+  std::string refusal;
+  try {
+    models_of("law = stvk\n");
+  } catch (const InputError& error) {
+    refusal = error.what();
+  }
+  CHECK(refusal.starts_with(folder.path() + ": law = 'stvk'"));
   CHECK_THROWS_WITH_AS(models_of("substrate = off\n"), doctest::Contains("substrate = 'off': expected on"), InputError);
   CHECK_THROWS_WITH_AS(models_of("probe_distance_um = 20\n"), doctest::Contains("probe_distance_um = '20': expected 10"),
                        InputError);

@@ -1,7 +1,9 @@
 // `growthuq eval` and `growthuq correlate` end to end: the built executable run on files in a
-// scratch folder, outputs read back and compared with the library and with reference values.
+// scratch folder, outputs read back and compared with the library and with reference values;
+// eval's refusals name the flag typed.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -76,6 +78,36 @@ TEST_CASE("eval: bad flags are one-line errors with exit code 2") {
   const CliOutcome mixed = scratch.run("eval --rho-um 0.5 --k 2 --in tubes.csv --out r.csv");
   CHECK(mixed.exit_code == 2);
   CHECK(mixed.err.find("--k cannot be combined with --in") != std::string::npos);
+}
+
+TEST_CASE("eval --fidelity corrected: a model option the correction was not fitted for is refused by its flag") {
+  const Scratch scratch("eval_corrected_flags");
+  const std::string tube = "eval --fidelity corrected --rho-um 0.25 --k 2 --d-um 6.4 --d0-um 5.35 --h-nm 200 ";
+  const struct {
+    std::string flags, refusal;
+  } cases[] = {
+      {"--law stvk", "--law = 'stvk': expected log, the value fidelity corrected was fitted for"},
+      {"--geometry sphere", "--geometry = 'sphere': expected tube"},
+      {"--substrate off", "--substrate = 'off': expected on,"},
+      {"--bending off", "--bending = 'off': expected on,"},
+      {"--tube-length-um 80", "--tube-length-um = '80': expected 100,"},
+      {"--probe-distance-um 20", "--probe-distance-um = '20': expected 10,"},
+      {"--window-uN 0.4,3", "--window-uN = '0.4,3': expected 0.4,4,"},
+      {"--nu 0.3", "--nu = '0.3': expected 0.2,"},
+  };
+  for (const auto& c : cases) {
+    CAPTURE(c.flags);
+    const CliOutcome run = scratch.run(tube + c.flags);
+    CAPTURE(run.err);
+    CHECK(run.exit_code == 2);
+    // The flag right after the command, as typed: not the campaign key (law, poisson_ratio, ...).
+    CHECK(run.err.rfind("growthuq eval: error: " + c.refusal, 0) == 0);
+    CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+  }
+  // The options it was fitted for, stated or not, give a value.
+  const CliOutcome fitted = scratch.run(tube + "--law log --substrate on --window-uN 0.4,4 --nu 0.2");
+  CAPTURE(fitted.err);
+  CHECK(fitted.exit_code == 0);
 }
 
 TEST_CASE("eval: a file of tubes gets outputs, empty cells and a status per row") {
