@@ -1,6 +1,5 @@
 #include "shell_fe_flags.hpp"
 
-#include <cstdio>
 #include <sstream>
 
 #include "growthuq/core/error.hpp"
@@ -8,13 +7,6 @@
 
 namespace growthuq::cli {
 namespace {
-
-// A length in um or a force in uN for display: 12 digits drop the residue of the SI round trip.
-std::string typed(double si) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.12g", si * 1e6);
-  return text;
-}
 
 bool on_off(const std::string& text, std::string_view command, std::string_view flag) {
   if (text == "on") return true;
@@ -92,14 +84,14 @@ std::string describe(const ShellFeOptions& options) {
   std::ostringstream text;
   text << "law = " << to_string(options.law) << ", geometry = " << to_string(options.geometry);
   if (options.geometry == ShellFeGeometry::tube) {
-    text << " (L = " << typed(options.tube_length) << " um, probe " << typed(options.probe_distance)
+    text << " (L = " << format_micro(options.tube_length) << " um, probe " << format_micro(options.probe_distance)
          << " um behind the apex)";
   } else if (options.geometry == ShellFeGeometry::file) {
     text << " (" << options.mesh_file << ")";
   }
   text << ", mesh = " << to_string(options.mesh) << ", substrate " << (options.substrate ? "on" : "off") << ", bending "
        << (options.bending ? "on" : "off") << (options.half_model ? ", half model" : ", full model") << ", window "
-       << typed(options.force_window[0]) << "-" << typed(options.force_window[1]) << " uN";
+       << format_micro(options.force_window[0]) << "-" << format_micro(options.force_window[1]) << " uN";
   return text.str();
 }
 

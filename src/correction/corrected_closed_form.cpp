@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <utility>
 
@@ -49,14 +48,6 @@ bool scaled(const std::array<double, correction_groups>& log_groups, const Corre
   return true;
 }
 
-// A length in um (or a force in uN) as typed: 12 significant digits drop the binary residue
-// of the SI conversion (0.4e-6 * 1e6 = 0.39999999999999997).
-std::string um(double si) {
-  std::array<char, 32> text{};
-  std::snprintf(text.data(), text.size(), "%.12g", si * 1e6);
-  return text.data();
-}
-
 }  // namespace
 
 std::array<double, correction_groups> correction_log_groups(double k_tube, const TubeDiameters& diameters, double h,
@@ -81,15 +72,15 @@ void require_fitted_for(const Correction& correction, const ShellFeOptions& opti
   if (options.substrate != correction.substrate) refuse("substrate", "--substrate", on_off(options.substrate), on_off(correction.substrate));
   if (options.bending != correction.bending) refuse("bending", "--bending", on_off(options.bending), on_off(correction.bending));
   if (std::abs(options.tube_length - correction.tube_length) > 1e-9 * correction.tube_length) {
-    refuse("tube_length_um", "--tube-length-um", um(options.tube_length), um(correction.tube_length));
+    refuse("tube_length_um", "--tube-length-um", format_micro(options.tube_length), format_micro(correction.tube_length));
   }
   if (std::abs(options.probe_distance - correction.probe_distance) > 1e-9 * correction.tube_length) {
-    refuse("probe_distance_um", "--probe-distance-um", um(options.probe_distance), um(correction.probe_distance));
+    refuse("probe_distance_um", "--probe-distance-um", format_micro(options.probe_distance), format_micro(correction.probe_distance));
   }
   for (std::size_t end = 0; end < 2; ++end) {
     if (std::abs(options.force_window[end] - correction.force_window[end]) > 1e-9 * correction.force_window[1]) {
-      refuse("force_window_uN", "--window-uN", um(options.force_window[0]) + "," + um(options.force_window[1]),
-             um(correction.force_window[0]) + "," + um(correction.force_window[1]));
+      refuse("force_window_uN", "--window-uN", format_micro(options.force_window[0]) + "," + format_micro(options.force_window[1]),
+             format_micro(correction.force_window[0]) + "," + format_micro(correction.force_window[1]));
     }
   }
   if (std::abs(instrument.poisson_ratio - correction.poisson_ratio) > 1e-12) {

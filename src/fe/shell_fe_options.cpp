@@ -10,17 +10,12 @@
 #include "growthuq/fe/indentation.hpp"
 
 namespace growthuq {
-namespace {
 
-// A length in um (or a force in uN) as typed: 12 significant digits drop the binary residue
-// of the SI conversion (4e-6 * 1e6 = 3.9999999999999996).
-std::string micrometres(double si) {
+std::string format_micro(double si) {
   std::array<char, 32> text{};
   std::snprintf(text.data(), text.size(), "%.12g", si * 1e6);
   return text.data();
 }
-
-}  // namespace
 
 std::string_view to_string(ShellFeLaw law) {
   return law == ShellFeLaw::hencky ? "log" : "stvk";
@@ -74,15 +69,15 @@ void ShellFeOptions::validate(std::string_view location) const {
   // The tube must hold its hemispherical tip (radius d0/2 <= 25 um over the envelope) and
   // reach well behind the probe; 1 m is an upper bound against a unit mistake.
   if (!(std::isfinite(tube_length) && tube_length >= 5e-6 && tube_length <= 1.0)) {
-    throw_bad_value(location, "tube_length_um", micrometres(tube_length), "a tube length in [5, 1e6] um (default 100)");
+    throw_bad_value(location, "tube_length_um", format_micro(tube_length), "a tube length in [5, 1e6] um (default 100)");
   }
   if (!(std::isfinite(probe_distance) && probe_distance >= 0.0 && probe_distance < tube_length)) {
-    throw_bad_value(location, "probe_distance_um", micrometres(probe_distance),
+    throw_bad_value(location, "probe_distance_um", format_micro(probe_distance),
                     "the probe's distance behind the apex in [0, tube_length) um (default 10)");
   }
   const double low = force_window[0], high = force_window[1];
   if (!(std::isfinite(low) && std::isfinite(high) && low >= 0.0 && high > low)) {
-    throw_bad_value(location, "force_window_uN", micrometres(low) + "," + micrometres(high),
+    throw_bad_value(location, "force_window_uN", format_micro(low) + "," + format_micro(high),
                     "two forces 0 <= low < high in uN (default 0.4,4)");
   }
   if (!(inflation_tolerance >= 0.0)) {

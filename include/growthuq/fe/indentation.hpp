@@ -55,6 +55,9 @@ std::string_view to_string(ShellFeMesh);      // "coarse", "default", "fine"
 ShellFeLaw parse_shell_fe_law(std::string_view text, std::string_view location, std::string_view key);
 ShellFeGeometry parse_shell_fe_geometry(std::string_view text, std::string_view location, std::string_view key);
 ShellFeMesh parse_shell_fe_mesh(std::string_view text, std::string_view location, std::string_view key);
+// An option's length in um or force in uN, from SI, as typed, for messages and headers: 12
+// significant digits drop the binary residue of the SI conversion (4e-6 * 1e6 = 3.9999999999999996).
+std::string format_micro(double si);
 
 // Why a simulation or an inverse has no value (never a NaN, never an exception from a batch).
 enum class ShellFeStatus {
