@@ -310,10 +310,6 @@ Fidelity parse_fidelity(std::string_view text, std::string_view location, std::s
                   "corrected to the finite-element model) or shell_fe (the finite-element model)");
 }
 
-bool Campaign::uses(Fidelity wanted) const {
-  return std::any_of(lines.begin(), lines.end(), [&](const CampaignLine& line) { return fidelity_of(line) == wanted; });
-}
-
 const CampaignLine* Campaign::find_line(std::string_view line_name) const {
   for (const CampaignLine& line : lines) {
     if (line.name == line_name) return &line;

@@ -74,8 +74,6 @@ TEST_CASE("fidelity: the three names, the old name, the default, and a line's ow
                                         folder.path());
   CHECK(mixed.fidelity_of(mixed.lines[0]) == Fidelity::closed_form);
   CHECK(mixed.fidelity_of(mixed.lines[1]) == Fidelity::shell_fe);
-  CHECK(mixed.uses(Fidelity::shell_fe));
-  CHECK_FALSE(mixed.uses(Fidelity::corrected));
   // Finite-element samples go out one by one; the analytic lines keep the campaign's chunks.
   CHECK(mixed.chunk_size_of(mixed.lines[0]) == 4096);
   CHECK(mixed.chunk_size_of(mixed.lines[1]) == 1);
