@@ -59,6 +59,37 @@ ShellFeMesh parse_shell_fe_mesh(std::string_view text, std::string_view location
   throw_bad_value(location, key, text, "coarse, default or fine");
 }
 
+bool parse_shell_fe_switch(std::string_view text, std::string_view location, std::string_view key) {
+  if (text == "on") return true;
+  if (text == "off") return false;
+  throw_bad_value(location, key, text, "on or off");
+}
+
+double parse_shell_fe_tube_length(std::string_view text, std::string_view location, std::string_view key) {
+  const double um = parse_double(text, location, key);
+  if (!(um >= 5.0 && um <= 1e6)) throw_bad_value(location, key, text, "a tube length in [5, 1e6] um (default 100)");
+  return um * 1e-6;
+}
+
+double parse_shell_fe_probe_distance(std::string_view text, std::string_view location, std::string_view key,
+                                     double tube_length) {
+  const double distance = parse_double(text, location, key) * 1e-6;
+  if (!(distance >= 0.0 && distance < tube_length)) {
+    throw_bad_value(location, key, text, "the probe's distance behind the apex in [0, tube_length) um (default 10)");
+  }
+  return distance;
+}
+
+std::array<double, 2> parse_shell_fe_force_window(std::string_view text, std::string_view location, std::string_view key) {
+  const std::size_t comma = text.find(',');
+  const auto low = comma == std::string_view::npos ? std::nullopt : try_parse_double(text.substr(0, comma));
+  const auto high = comma == std::string_view::npos ? std::nullopt : try_parse_double(text.substr(comma + 1));
+  if (!low || !high || !(*low >= 0.0) || !(*high > *low)) {
+    throw_bad_value(location, key, text, "two forces 'LOW,HIGH' in uN with 0 <= LOW < HIGH (default 0.4,4)");
+  }
+  return {*low * 1e-6, *high * 1e-6};
+}
+
 void ShellFeOptions::validate(std::string_view location) const {
   if (geometry == ShellFeGeometry::file && mesh_file.empty()) {
     throw_bad_value(location, "mesh_file", "", "a closed triangulated surface file (geometry = file needs one)");
