@@ -144,37 +144,27 @@ void read_campaign_section(const IniDocument& document, const IniSection& sectio
   reader.reject_unknown_keys("name, seed, samples, outputs, output_dir, formats, chunk_size, stratum_position, fidelity");
 }
 
-bool parse_on_off(const SectionReader& reader, const IniEntry& entry) {
-  if (entry.value == "on") return true;
-  if (entry.value == "off") return false;
-  throw_bad_value(reader.location(entry), entry.key, entry.value, "on or off");
-}
-
 // [shell_fe]: the finite-element model's options (growthuq/fe/indentation.hpp), the keys of
-// `growthuq indent`'s flags; a campaign's model is always the capped tube.
+// `growthuq indent`'s flags, read by the flags' parsers; a campaign's model is always the capped
+// tube.
 void read_shell_fe_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
   SectionReader reader(document, section);
   ShellFeOptions& options = campaign.shell_fe;
-  if (const IniEntry* law = reader.optional("law")) options.law = parse_shell_fe_law(law->value, reader.location(*law), law->key);
-  if (const IniEntry* mesh = reader.optional("mesh")) options.mesh = parse_shell_fe_mesh(mesh->value, reader.location(*mesh), mesh->key);
-  if (const IniEntry* substrate = reader.optional("substrate")) options.substrate = parse_on_off(reader, *substrate);
-  if (const IniEntry* bending = reader.optional("bending")) options.bending = parse_on_off(reader, *bending);
-  if (const IniEntry* half = reader.optional("half_model")) options.half_model = parse_on_off(reader, *half);
-  if (const IniEntry* length = reader.optional("tube_length_um")) {
-    options.tube_length = reader.number(*length, 5.0, 1e6, "a tube length in [5, 1e6] um (default 100)") * 1e-6;
-  }
-  if (const IniEntry* distance = reader.optional("probe_distance_um")) {
-    options.probe_distance = reader.number(*distance, 0.0, 1e6, "the probe's distance behind the apex in [0, tube_length) um (default 10)") * 1e-6;
-  }
-  if (const IniEntry* window = reader.optional("force_window_uN")) {
-    const std::size_t comma = window->value.find(',');
-    const auto low = comma == std::string::npos ? std::nullopt : try_parse_double(trim(std::string_view(window->value).substr(0, comma)));
-    const auto high = comma == std::string::npos ? std::nullopt : try_parse_double(trim(std::string_view(window->value).substr(comma + 1)));
-    if (!low || !high || !(*low >= 0.0) || !(*high > *low) || !std::isfinite(*high)) {
-      throw_bad_value(reader.location(*window), window->key, window->value, "two forces 'LOW,HIGH' in uN with 0 <= LOW < HIGH (default 0.4,4)");
-    }
-    options.force_window = {*low * 1e-6, *high * 1e-6};
-  }
+  // The key's value into its option, through `parse(text, location, key)`.
+  const auto read = [&reader](std::string_view key, auto& option, auto parse) {
+    if (const IniEntry* entry = reader.optional(key)) option = parse(entry->value, reader.location(*entry), entry->key);
+  };
+  read("law", options.law, parse_shell_fe_law);
+  read("mesh", options.mesh, parse_shell_fe_mesh);
+  read("substrate", options.substrate, parse_shell_fe_switch);
+  read("bending", options.bending, parse_shell_fe_switch);
+  read("half_model", options.half_model, parse_shell_fe_switch);
+  read("tube_length_um", options.tube_length, parse_shell_fe_tube_length);
+  // Checked against the tube's length with the whole section, below.
+  read("probe_distance_um", options.probe_distance, [](std::string_view text, std::string_view location, std::string_view key) {
+    return parse_shell_fe_probe_distance(text, location, key, 1.0);
+  });
+  read("force_window_uN", options.force_window, parse_shell_fe_force_window);
   if (const IniEntry* chunk = reader.optional("chunk_size")) {
     campaign.shell_fe_chunk_size = parse_count(chunk->value, reader.location(*chunk), chunk->key, 1, 10000);
   }
@@ -308,10 +298,6 @@ Fidelity parse_fidelity(std::string_view text, std::string_view location, std::s
   throw_bad_value(location, key, text,
                   "closed_form (the thin shell's closed forms; old name thin_shell), corrected (the closed form "
                   "corrected to the finite-element model) or shell_fe (the finite-element model)");
-}
-
-bool Campaign::uses(Fidelity wanted) const {
-  return std::any_of(lines.begin(), lines.end(), [&](const CampaignLine& line) { return fidelity_of(line) == wanted; });
 }
 
 const CampaignLine* Campaign::find_line(std::string_view line_name) const {

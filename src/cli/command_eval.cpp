@@ -477,8 +477,9 @@ int run_eval(const Arguments& arguments) {
     return options.in.empty() ? evaluate_point(options, parameters, nullptr) : evaluate_file(options, parameters, nullptr);
   }
   if (options.fidelity == "corrected") {
-    // The model options say what the correction must have been fitted for: refused otherwise.
-    const CorrectedTurgorModulus corrected(parameters, options.model.parse(command), command);
+    // The model options say what the correction must have been fitted for: refused otherwise,
+    // naming the flag typed.
+    const CorrectedTurgorModulus corrected(parameters, options.model.parse(command), command, OptionNames::command_flags);
     return options.in.empty() ? evaluate_point(options, parameters, &corrected)
                               : evaluate_file(options, parameters, nullptr, &corrected);
   }

@@ -1,28 +1,10 @@
 #include "shell_fe_flags.hpp"
 
-#include <cstdio>
 #include <sstream>
 
 #include "growthuq/core/error.hpp"
-#include "growthuq/core/numbers.hpp"
 
 namespace growthuq::cli {
-namespace {
-
-// A length in um or a force in uN for display: 12 digits drop the residue of the SI round trip.
-std::string typed(double si) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.12g", si * 1e6);
-  return text;
-}
-
-bool on_off(const std::string& text, std::string_view command, std::string_view flag) {
-  if (text == "on") return true;
-  if (text == "off") return false;
-  throw_bad_value(command, flag, text, "on or off");
-}
-
-}  // namespace
 
 void ShellFeFlags::declare(po::options_description& options) {
   options.add_options()
@@ -66,24 +48,13 @@ ShellFeOptions ShellFeFlags::parse(std::string_view command) const {
     throw InputError(std::string(command), "--mesh-file needs --geometry file");
   }
   options.mesh = parse_shell_fe_mesh(mesh, command, "--mesh");
-  options.substrate = on_off(substrate, command, "--substrate");
-  options.bending = on_off(bending, command, "--bending");
-  options.half_model = on_off(half_model, command, "--half-model");
-  options.tube_length = parse_double(tube_length_um, command, "--tube-length-um") * 1e-6;
-  if (!(options.tube_length >= 5e-6 && options.tube_length <= 1.0)) {
-    throw_bad_value(command, "--tube-length-um", tube_length_um, "a tube length in [5, 1e6] um (default 100)");
-  }
-  options.probe_distance = parse_double(probe_distance_um, command, "--probe-distance-um") * 1e-6;
-  if (!(options.probe_distance >= 0 && options.probe_distance < options.tube_length)) {
-    throw_bad_value(command, "--probe-distance-um", probe_distance_um,
-                    "the probe's distance behind the apex in [0, tube length) um (default 10)");
-  }
-  const auto comma = window_uN.find(',');
-  if (comma == std::string::npos) throw_bad_value(command, "--window-uN", window_uN, "LOW,HIGH in uN, e.g. 0.4,4");
-  const double low = parse_double(window_uN.substr(0, comma), command, "--window-uN");
-  const double high = parse_double(window_uN.substr(comma + 1), command, "--window-uN");
-  if (!(low >= 0 && high > low)) throw_bad_value(command, "--window-uN", window_uN, "LOW,HIGH in uN with 0 <= LOW < HIGH");
-  options.force_window = {low * 1e-6, high * 1e-6};
+  // The [shell_fe] section's parsers and messages, by the flag's name.
+  options.substrate = parse_shell_fe_switch(substrate, command, "--substrate");
+  options.bending = parse_shell_fe_switch(bending, command, "--bending");
+  options.half_model = parse_shell_fe_switch(half_model, command, "--half-model");
+  options.tube_length = parse_shell_fe_tube_length(tube_length_um, command, "--tube-length-um");
+  options.probe_distance = parse_shell_fe_probe_distance(probe_distance_um, command, "--probe-distance-um", options.tube_length);
+  options.force_window = parse_shell_fe_force_window(window_uN, command, "--window-uN");
   options.validate(command);  // the library's own check, as an invariant
   return options;
 }
@@ -92,14 +63,14 @@ std::string describe(const ShellFeOptions& options) {
   std::ostringstream text;
   text << "law = " << to_string(options.law) << ", geometry = " << to_string(options.geometry);
   if (options.geometry == ShellFeGeometry::tube) {
-    text << " (L = " << typed(options.tube_length) << " um, probe " << typed(options.probe_distance)
+    text << " (L = " << format_micro(options.tube_length) << " um, probe " << format_micro(options.probe_distance)
          << " um behind the apex)";
   } else if (options.geometry == ShellFeGeometry::file) {
     text << " (" << options.mesh_file << ")";
   }
   text << ", mesh = " << to_string(options.mesh) << ", substrate " << (options.substrate ? "on" : "off") << ", bending "
        << (options.bending ? "on" : "off") << (options.half_model ? ", half model" : ", full model") << ", window "
-       << typed(options.force_window[0]) << "-" << typed(options.force_window[1]) << " uN";
+       << format_micro(options.force_window[0]) << "-" << format_micro(options.force_window[1]) << " uN";
   return text.str();
 }
 

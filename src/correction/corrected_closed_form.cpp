@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <utility>
 
@@ -49,14 +48,6 @@ bool scaled(const std::array<double, correction_groups>& log_groups, const Corre
   return true;
 }
 
-// A length in um (or a force in uN) as typed: 12 significant digits drop the binary residue
-// of the SI conversion (0.4e-6 * 1e6 = 0.39999999999999997).
-std::string um(double si) {
-  std::array<char, 32> text{};
-  std::snprintf(text.data(), text.size(), "%.12g", si * 1e6);
-  return text.data();
-}
-
 }  // namespace
 
 std::array<double, correction_groups> correction_log_groups(double k_tube, const TubeDiameters& diameters, double h,
@@ -66,30 +57,34 @@ std::array<double, correction_groups> correction_log_groups(double k_tube, const
 }
 
 void require_fitted_for(const Correction& correction, const ShellFeOptions& options, const Instrument& instrument,
-                        std::string_view location) {
-  const auto refuse = [&](std::string_view key, const std::string& value, const std::string& fitted) {
-    throw_bad_value(location, key, value,
+                        std::string_view location, OptionNames names) {
+  // Each option by its campaign key and by the command-line flag that sets it.
+  const auto refuse = [&](std::string_view key, std::string_view flag, const std::string& value, const std::string& fitted) {
+    throw_bad_value(location, names == OptionNames::command_flags ? flag : key, value,
                     fitted + ", the value fidelity corrected was fitted for (src/correction/README.md; "
                              "another value needs fidelity shell_fe, or a correction refitted with growthuq fit-correction)");
   };
-  if (options.geometry != ShellFeGeometry::tube) refuse("geometry", std::string(to_string(options.geometry)), "tube");
-  if (options.law != correction.law) refuse("law", std::string(to_string(options.law)), std::string(to_string(correction.law)));
-  if (options.substrate != correction.substrate) refuse("substrate", options.substrate ? "on" : "off", correction.substrate ? "on" : "off");
-  if (options.bending != correction.bending) refuse("bending", options.bending ? "on" : "off", correction.bending ? "on" : "off");
+  const auto on_off = [](bool on) { return std::string(on ? "on" : "off"); };
+  if (options.geometry != ShellFeGeometry::tube) refuse("geometry", "--geometry", std::string(to_string(options.geometry)), "tube");
+  if (options.law != correction.law) {
+    refuse("law", "--law", std::string(to_string(options.law)), std::string(to_string(correction.law)));
+  }
+  if (options.substrate != correction.substrate) refuse("substrate", "--substrate", on_off(options.substrate), on_off(correction.substrate));
+  if (options.bending != correction.bending) refuse("bending", "--bending", on_off(options.bending), on_off(correction.bending));
   if (std::abs(options.tube_length - correction.tube_length) > 1e-9 * correction.tube_length) {
-    refuse("tube_length_um", um(options.tube_length), um(correction.tube_length));
+    refuse("tube_length_um", "--tube-length-um", format_micro(options.tube_length), format_micro(correction.tube_length));
   }
   if (std::abs(options.probe_distance - correction.probe_distance) > 1e-9 * correction.tube_length) {
-    refuse("probe_distance_um", um(options.probe_distance), um(correction.probe_distance));
+    refuse("probe_distance_um", "--probe-distance-um", format_micro(options.probe_distance), format_micro(correction.probe_distance));
   }
   for (std::size_t end = 0; end < 2; ++end) {
     if (std::abs(options.force_window[end] - correction.force_window[end]) > 1e-9 * correction.force_window[1]) {
-      refuse("force_window_uN", um(options.force_window[0]) + "," + um(options.force_window[1]),
-             um(correction.force_window[0]) + "," + um(correction.force_window[1]));
+      refuse("force_window_uN", "--window-uN", format_micro(options.force_window[0]) + "," + format_micro(options.force_window[1]),
+             format_micro(correction.force_window[0]) + "," + format_micro(correction.force_window[1]));
     }
   }
   if (std::abs(instrument.poisson_ratio - correction.poisson_ratio) > 1e-12) {
-    refuse("poisson_ratio", format_double(instrument.poisson_ratio), format_double(correction.poisson_ratio));
+    refuse("poisson_ratio", "--nu", format_double(instrument.poisson_ratio), format_double(correction.poisson_ratio));
   }
 }
 
@@ -127,14 +122,15 @@ CorrectedInverse corrected_inverse(double k_measured, const TubeDiameters& diame
 }
 
 CorrectedTurgorModulus::CorrectedTurgorModulus(const Instrument& instrument, const ShellFeOptions& options,
-                                               std::string_view location, const Correction& correction)
+                                               std::string_view location, OptionNames names,
+                                               const Correction& correction)
     : instrument_(instrument), correction_(correction) {
   validate(instrument_, location);
   if (correction_.training_points == 0) {
     throw InputError(std::string(location), "fidelity corrected: this build holds no fitted correction "
                                             "(src/correction/shipped_correction.inc; growthuq fit-correction writes it)");
   }
-  require_fitted_for(correction_, options, instrument_, location);
+  require_fitted_for(correction_, options, instrument_, location, names);
 }
 
 void CorrectedTurgorModulus::evaluate(SampleBlock& block) const {

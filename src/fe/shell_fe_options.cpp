@@ -10,17 +10,12 @@
 #include "growthuq/fe/indentation.hpp"
 
 namespace growthuq {
-namespace {
 
-// A length in um (or a force in uN) as typed: 12 significant digits drop the binary residue
-// of the SI conversion (4e-6 * 1e6 = 3.9999999999999996).
-std::string micrometres(double si) {
+std::string format_micro(double si) {
   std::array<char, 32> text{};
   std::snprintf(text.data(), text.size(), "%.12g", si * 1e6);
   return text.data();
 }
-
-}  // namespace
 
 std::string_view to_string(ShellFeLaw law) {
   return law == ShellFeLaw::hencky ? "log" : "stvk";
@@ -64,6 +59,37 @@ ShellFeMesh parse_shell_fe_mesh(std::string_view text, std::string_view location
   throw_bad_value(location, key, text, "coarse, default or fine");
 }
 
+bool parse_shell_fe_switch(std::string_view text, std::string_view location, std::string_view key) {
+  if (text == "on") return true;
+  if (text == "off") return false;
+  throw_bad_value(location, key, text, "on or off");
+}
+
+double parse_shell_fe_tube_length(std::string_view text, std::string_view location, std::string_view key) {
+  const double um = parse_double(text, location, key);
+  if (!(um >= 5.0 && um <= 1e6)) throw_bad_value(location, key, text, "a tube length in [5, 1e6] um (default 100)");
+  return um * 1e-6;
+}
+
+double parse_shell_fe_probe_distance(std::string_view text, std::string_view location, std::string_view key,
+                                     double tube_length) {
+  const double distance = parse_double(text, location, key) * 1e-6;
+  if (!(distance >= 0.0 && distance < tube_length)) {
+    throw_bad_value(location, key, text, "the probe's distance behind the apex in [0, tube_length) um (default 10)");
+  }
+  return distance;
+}
+
+std::array<double, 2> parse_shell_fe_force_window(std::string_view text, std::string_view location, std::string_view key) {
+  const std::size_t comma = text.find(',');
+  const auto low = comma == std::string_view::npos ? std::nullopt : try_parse_double(text.substr(0, comma));
+  const auto high = comma == std::string_view::npos ? std::nullopt : try_parse_double(text.substr(comma + 1));
+  if (!low || !high || !(*low >= 0.0) || !(*high > *low)) {
+    throw_bad_value(location, key, text, "two forces 'LOW,HIGH' in uN with 0 <= LOW < HIGH (default 0.4,4)");
+  }
+  return {*low * 1e-6, *high * 1e-6};
+}
+
 void ShellFeOptions::validate(std::string_view location) const {
   if (geometry == ShellFeGeometry::file && mesh_file.empty()) {
     throw_bad_value(location, "mesh_file", "", "a closed triangulated surface file (geometry = file needs one)");
@@ -74,15 +100,15 @@ void ShellFeOptions::validate(std::string_view location) const {
   // The tube must hold its hemispherical tip (radius d0/2 <= 25 um over the envelope) and
   // reach well behind the probe; 1 m is an upper bound against a unit mistake.
   if (!(std::isfinite(tube_length) && tube_length >= 5e-6 && tube_length <= 1.0)) {
-    throw_bad_value(location, "tube_length_um", micrometres(tube_length), "a tube length in [5, 1e6] um (default 100)");
+    throw_bad_value(location, "tube_length_um", format_micro(tube_length), "a tube length in [5, 1e6] um (default 100)");
   }
   if (!(std::isfinite(probe_distance) && probe_distance >= 0.0 && probe_distance < tube_length)) {
-    throw_bad_value(location, "probe_distance_um", micrometres(probe_distance),
+    throw_bad_value(location, "probe_distance_um", format_micro(probe_distance),
                     "the probe's distance behind the apex in [0, tube_length) um (default 10)");
   }
   const double low = force_window[0], high = force_window[1];
   if (!(std::isfinite(low) && std::isfinite(high) && low >= 0.0 && high > low)) {
-    throw_bad_value(location, "force_window_uN", micrometres(low) + "," + micrometres(high),
+    throw_bad_value(location, "force_window_uN", format_micro(low) + "," + format_micro(high),
                     "two forces 0 <= low < high in uN (default 0.4,4)");
   }
   if (!(inflation_tolerance >= 0.0)) {

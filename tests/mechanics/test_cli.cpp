@@ -1,10 +1,13 @@
 // `growthuq eval` and `growthuq correlate` end to end: the built executable run on files in a
-// scratch folder, outputs read back and compared with the library and with reference values.
+// scratch folder, outputs read back and compared with the library and with reference values;
+// eval's refusals name the flag typed.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <string>
 
 #include "growthuq/core/numbers.hpp"
@@ -36,6 +39,26 @@ class Scratch {
 };
 
 double relative_error(double value, double reference) { return std::fabs(value - reference) / std::fabs(reference); }
+
+// One tube inside the correction's envelope, through eval --fidelity corrected.
+constexpr const char* corrected_tube = "eval --fidelity corrected --rho-um 0.25 --k 2 --d-um 6.4 --d0-um 5.35 --h-nm 200";
+
+struct Refusal {
+  std::string flags, message;
+};
+
+// `corrected_tube` with each refusal's flags added: exit code 2 and one line, the message
+// right after the command.
+void check_corrected_refusals(const Scratch& scratch, std::initializer_list<Refusal> refusals) {
+  for (const Refusal& refusal : refusals) {
+    CAPTURE(refusal.flags);
+    const CliOutcome run = scratch.run(std::string(corrected_tube) + " " + refusal.flags);
+    CAPTURE(run.err);
+    CHECK(run.exit_code == 2);
+    CHECK(run.err.rfind("growthuq eval: error: " + refusal.message, 0) == 0);
+    CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+  }
+}
 
 }  // namespace
 
@@ -76,6 +99,38 @@ TEST_CASE("eval: bad flags are one-line errors with exit code 2") {
   const CliOutcome mixed = scratch.run("eval --rho-um 0.5 --k 2 --in tubes.csv --out r.csv");
   CHECK(mixed.exit_code == 2);
   CHECK(mixed.err.find("--k cannot be combined with --in") != std::string::npos);
+}
+
+TEST_CASE("eval --fidelity corrected: a model option the correction was not fitted for is refused by its flag") {
+  const Scratch scratch("eval_corrected_flags");
+  // The flag right after the command, as typed: not the campaign key (law, poisson_ratio, ...).
+  check_corrected_refusals(scratch, {
+      {"--law stvk", "--law = 'stvk': expected log, the value fidelity corrected was fitted for"},
+      {"--geometry sphere", "--geometry = 'sphere': expected tube"},
+      {"--substrate off", "--substrate = 'off': expected on,"},
+      {"--bending off", "--bending = 'off': expected on,"},
+      {"--tube-length-um 80", "--tube-length-um = '80': expected 100,"},
+      {"--probe-distance-um 20", "--probe-distance-um = '20': expected 10,"},
+      {"--window-uN 0.4,3", "--window-uN = '0.4,3': expected 0.4,4,"},
+      {"--nu 0.3", "--nu = '0.3': expected 0.2,"},
+  });
+  // The options it was fitted for, stated or not, give a value.
+  const CliOutcome fitted = scratch.run(std::string(corrected_tube) + " --law log --substrate on --window-uN 0.4,4 --nu 0.2");
+  CAPTURE(fitted.err);
+  CHECK(fitted.exit_code == 0);
+}
+
+TEST_CASE("eval's model flags: the [shell_fe] section's parsers and messages, by the flag's name") {
+  const Scratch scratch("eval_model_flags");
+  check_corrected_refusals(scratch, {
+      {"--half-model maybe", "--half-model = 'maybe': expected on or off"},
+      {"--tube-length-um 4", "--tube-length-um = '4': expected a tube length in [5, 1e6] um (default 100)"},
+      {"--tube-length-um 20 --probe-distance-um 30",
+       "--probe-distance-um = '30': expected the probe's distance behind the apex in [0, tube_length) um (default 10)"},
+      {"--window-uN 4", "--window-uN = '4': expected two forces 'LOW,HIGH' in uN with 0 <= LOW < HIGH (default 0.4,4)"},
+      {"--window-uN 4,0.4", "--window-uN = '4,0.4': expected two forces 'LOW,HIGH'"},
+      {"--window-uN 0.4,x", "--window-uN = '0.4,x': expected two forces 'LOW,HIGH'"},
+  });
 }
 
 TEST_CASE("eval: a file of tubes gets outputs, empty cells and a status per row") {

@@ -102,7 +102,6 @@ struct Campaign {
   std::size_t chunk_size_of(const CampaignLine& line) const {
     return fidelity_of(line) == Fidelity::shell_fe ? shell_fe_chunk_size : chunk_size;
   }
-  bool uses(Fidelity wanted) const;  // whether any line runs at this fidelity
 };
 
 // Reads and validates a campaign file: unknown sections or keys, missing required keys, bad

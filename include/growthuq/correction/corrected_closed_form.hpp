@@ -51,10 +51,15 @@ struct Correction {
 // `growthuq fit-correction` from src/correction/training.csv).
 const Correction& shipped_correction();
 
+// What a refusal calls an option: a campaign's key ([shell_fe] law, ..., [instrument]
+// poisson_ratio) or the command-line flag a command reads it from (--law, ..., --nu).
+enum class OptionNames { campaign_keys, command_flags };
+
 // InputError naming `location` and the first option that differs from what `correction` was
-// fitted for (the law, substrate, bending, tube length, probe distance, force window, nu).
+// fitted for (the geometry, law, substrate, bending, tube length, probe distance, force window,
+// nu), by its key or by its flag.
 void require_fitted_for(const Correction& correction, const ShellFeOptions& options, const Instrument& instrument,
-                        std::string_view location);
+                        std::string_view location, OptionNames names = OptionNames::campaign_keys);
 
 // ln of the four groups of a measured tube; k is the tube's own stiffness (after the sensor).
 std::array<double, correction_groups> correction_log_groups(double k_tube, const TubeDiameters& diameters, double h,
@@ -74,8 +79,9 @@ CorrectedInverse corrected_inverse(double k_measured, const TubeDiameters& diame
 class CorrectedTurgorModulus final : public Evaluator {
  public:
   // InputError naming `location` when the instrument is invalid or the options are not those
-  // the correction was fitted for.
+  // the correction was fitted for (naming the option as `names` says).
   CorrectedTurgorModulus(const Instrument& instrument, const ShellFeOptions& options, std::string_view location,
+                         OptionNames names = OptionNames::campaign_keys,
                          const Correction& correction = shipped_correction());
   std::string_view name() const override { return "corrected_turgor_modulus"; }
   std::vector<std::string> reads() const override { return {"k", "d", "d0", "h"}; }

@@ -51,10 +51,24 @@ struct ShellFeOptions {
 std::string_view to_string(ShellFeLaw);       // "log", "stvk"
 std::string_view to_string(ShellFeGeometry);  // "tube", "sphere", "file"
 std::string_view to_string(ShellFeMesh);      // "coarse", "default", "fine"
-// The option's value from its name; InputError naming `location` and `key` otherwise.
+// The option's value from its text as typed (a campaign's [shell_fe] value or a command's flag,
+// one parser and one message for both); InputError("<location>", "<key> = '<text>': expected
+// ...") otherwise.
 ShellFeLaw parse_shell_fe_law(std::string_view text, std::string_view location, std::string_view key);
 ShellFeGeometry parse_shell_fe_geometry(std::string_view text, std::string_view location, std::string_view key);
 ShellFeMesh parse_shell_fe_mesh(std::string_view text, std::string_view location, std::string_view key);
+bool parse_shell_fe_switch(std::string_view text, std::string_view location, std::string_view key);  // on | off
+// um in [5, 1e6] -> m.
+double parse_shell_fe_tube_length(std::string_view text, std::string_view location, std::string_view key);
+// um in [0, tube_length) -> m; a reader that has no tube length yet passes 1 m and leaves the
+// rest to ShellFeOptions::validate().
+double parse_shell_fe_probe_distance(std::string_view text, std::string_view location, std::string_view key,
+                                     double tube_length);
+// "LOW,HIGH" in uN with 0 <= LOW < HIGH -> N.
+std::array<double, 2> parse_shell_fe_force_window(std::string_view text, std::string_view location, std::string_view key);
+// An option's length in um or force in uN, from SI, as typed, for messages and headers: 12
+// significant digits drop the binary residue of the SI conversion (4e-6 * 1e6 = 3.9999999999999996).
+std::string format_micro(double si);
 
 // Why a simulation or an inverse has no value (never a NaN, never an exception from a batch).
 enum class ShellFeStatus {
