@@ -99,7 +99,8 @@ void ShellFeOptions::validate(std::string_view location) const {
   }
   // The tube must hold its hemispherical tip (radius d0/2 <= 25 um over the envelope) and
   // reach well behind the probe; 1 m is an upper bound against a unit mistake.
-  if (!(std::isfinite(tube_length) && tube_length >= 5e-6 && tube_length <= 1.0)) {
+  // The ends of [5, 1e6] um as typed: 5 um reaches here as 5 * 1e-6, a rounding below 5e-6.
+  if (!(std::isfinite(tube_length) && tube_length >= 5e-6 * (1 - 1e-12) && tube_length <= 1.0 * (1 + 1e-12))) {
     throw_bad_value(location, "tube_length_um", format_micro(tube_length), "a tube length in [5, 1e6] um (default 100)");
   }
   if (!(std::isfinite(probe_distance) && probe_distance >= 0.0 && probe_distance < tube_length)) {

@@ -43,6 +43,12 @@ TEST_CASE("shell_fe options: each bad option names its key, its value and the ra
   options.tube_length = 2e-6;
   CHECK(message_of(options) == "campaign.ini [shell_fe]: tube_length_um = '2': expected a tube length in [5, 1e6] um (default 100)");
   options = {};
+  options.tube_length = growthuq::parse_shell_fe_tube_length("5", "campaign.ini [shell_fe]", "tube_length_um");  // the range's ends, as typed
+  options.probe_distance = 1e-6;
+  CHECK_NOTHROW(options.validate("campaign.ini [shell_fe]"));
+  options.tube_length = growthuq::parse_shell_fe_tube_length("1e6", "campaign.ini [shell_fe]", "tube_length_um");
+  CHECK_NOTHROW(options.validate("campaign.ini [shell_fe]"));
+  options = {};
   options.probe_distance = 100e-6;
   CHECK(message_of(options).find("probe_distance_um = '100'") != std::string::npos);
   options = {};
