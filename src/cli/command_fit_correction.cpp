@@ -94,10 +94,11 @@ int run_fit_correction(const Arguments& arguments) {
       ("force", po::bool_switch(&force), "overwrite --out and --errors if they exist");
   po::variables_map values;
   if (!parse_arguments(arguments, "fit-correction", usage,
-                       "Fits fidelity corrected: two quadratic polynomials in the logarithms of the measured groups\n"
-                       "d/d0 - 1, h/d0, rho/d0 and F_top/(k d0), correcting the closed form's E and the far field's p/E to\n"
-                       "the finite-element inverse (src/correction/README.md). Fits the rows whose index is not a\n"
-                       "multiple of 5 plus 4, reports the largest errors in p and E on them and on the held-out rows,\n"
+                       "Fits fidelity corrected: two polynomials (a quadratic and the cubic terms in the strain) in\n"
+                       "the logarithms of the measured groups d/d0 - 1, h/d0, rho/d0, F_top/(k d0) and a/d0 (a the\n"
+                       "probe's distance behind the apex), correcting the closed form's E and the far field's p/E to\n"
+                       "the finite-element inverse (src/correction/README.md). Fits the rows with k <= 10 N/m\n"
+                       "whose index is not a multiple of 5 plus 4, reports the largest errors in p and E on them and on the held-out rows,\n"
                        "next to the plain closed form's, and writes the correction for the model options the data\n"
                        "were made with (the finite-element defaults: law log, substrate on, bending on, L = 100 um,\n"
                        "probe 10 um behind the apex, window 0.4-4 uN, nu = 0.2).",

@@ -19,14 +19,18 @@ namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-// The quadratic basis at z: 1, z_0..z_3, then z_i z_j for i <= j.
+// The basis at z: 1, z_i, z_i z_j (i <= j), then z_0 z_i z_j (i <= j): a full quadratic plus
+// the cubic terms in the hoop strain, the group along which the correction bends most (towards
+// the law's pressure maximum; src/correction/README.md).
 std::array<double, correction_terms> basis(const std::array<double, correction_groups>& z) {
   std::array<double, correction_terms> phi{};
   std::size_t t = 0;
   phi[t++] = 1.0;
   for (std::size_t i = 0; i < correction_groups; ++i) phi[t++] = z[i];
-  for (std::size_t i = 0; i < correction_groups; ++i) {
-    for (std::size_t j = i; j < correction_groups; ++j) phi[t++] = z[i] * z[j];
+  for (const double factor : {1.0, z[0]}) {
+    for (std::size_t i = 0; i < correction_groups; ++i) {
+      for (std::size_t j = i; j < correction_groups; ++j) phi[t++] = factor * z[i] * z[j];
+    }
   }
   return phi;
 }
@@ -53,7 +57,7 @@ bool scaled(const std::array<double, correction_groups>& log_groups, const Corre
 std::array<double, correction_groups> correction_log_groups(double k_tube, const TubeDiameters& diameters, double h,
                                                             double probe_radius, const Correction& correction) {
   return {std::log(diameters.strain), std::log(h / diameters.d0), std::log(probe_radius / diameters.d0),
-          std::log(correction.force_window[1] / (k_tube * diameters.d0))};
+          std::log(correction.force_window[1] / (k_tube * diameters.d0)), std::log(correction.probe_distance / diameters.d0)};
 }
 
 void require_fitted_for(const Correction& correction, const ShellFeOptions& options, const Instrument& instrument,
@@ -103,7 +107,8 @@ CorrectedInverse corrected_inverse(double k_measured, const TubeDiameters& diame
   result.closed_form_E = modulus.E;
   const double k_tube = tube_stiffness(k_measured, instrument);
   std::array<double, correction_groups> z{};
-  if (!scaled(correction_log_groups(k_tube, diameters, h, instrument.probe_radius_m, correction), correction, z)) {
+  if (k_tube > correction_max_stiffness ||  // stiffer than any fitted tube (in_training_envelope)
+      !scaled(correction_log_groups(k_tube, diameters, h, instrument.probe_radius_m, correction), correction, z)) {
     result.status = SampleStatus::outside_correction;
     result.p = result.E = nan;
     return result;

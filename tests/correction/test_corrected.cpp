@@ -97,6 +97,11 @@ TEST_CASE("outside the fitted range no value; the closed form's statuses pass th
   CHECK(corrected_inverse(k, diameters_in_si(1.9 * d0, d0), h, instrument, correction).status == SampleStatus::outside_correction);
   CHECK(corrected_inverse(k, middle, 20e-9, instrument, correction).status == SampleStatus::outside_correction);
   CHECK(corrected_inverse(1000.0, middle, h, instrument, correction).status == SampleStatus::outside_correction);
+  // Stiffer than the fitted tubes (k > 10 N/m) though every group lies inside its range: a narrow
+  // tube (d0 = 4 um) at 12 N/m has w = 0.083, inside; at 9 N/m it gets a value.
+  const TubeDiameters narrow = diameters_in_si(1.18 * 4e-6, 4e-6);
+  CHECK(corrected_inverse(9.0, narrow, h, instrument, correction).status == SampleStatus::ok);
+  CHECK(corrected_inverse(12.0, narrow, h, instrument, correction).status == SampleStatus::outside_correction);
   Instrument big_probe = instrument;
   big_probe.probe_radius_m = 5e-6;
   const CorrectedInverse outside = corrected_inverse(k, middle, h, big_probe, correction);

@@ -3,12 +3,13 @@
 // (fe/indentation.hpp) over the Arabidopsis-like envelope, at closed-form speed.
 // src/correction/README.md states the model, its training data and its error.
 //
-// The finite-element model depends on p/E, h0/d0, rho/d0 (and L/d0, a/d0, nu, the force window
-// over E d0^2); a measured tube gives four dimensionless groups from which all of these follow:
-//   s = d/d0 - 1 (hoop strain), h/d0 (turgid thickness), rho/d0, w = F_top / (k d0),
-// w being the depth at which the closed form's k would reach the force window's top, over d0.
-// The correction is two quadratic polynomials in the logarithms of these groups (each scaled
-// onto [-1, 1] over the training data):
+// The finite-element model depends on p/E, h0/d0, rho/d0, a/d0 (and L/d0, nu, the force window
+// over E d0^2); a measured tube gives five dimensionless groups from which all of these follow:
+//   s = d/d0 - 1 (hoop strain), h/d0 (turgid thickness), rho/d0, w = F_top / (k d0), a/d0,
+// w being the depth at which the closed form's k would reach the force window's top, over d0, and
+// a the probe's distance behind the apex (fixed by the options, so a/d0 carries d0 itself).
+// The correction is two polynomials in the logarithms of these groups (each scaled onto [-1, 1]
+// over the training data), a full quadratic plus the cubic terms that contain s:
 //   E       = E_closed_form * exp(c_E(z))
 //   p / E   = (p/E)_far_field * exp(c_pE(z))
 // where (p/E)_far_field is the model's own far-field inflation inverted exactly (the log law:
@@ -28,8 +29,9 @@
 
 namespace growthuq {
 
-inline constexpr std::size_t correction_groups = 4;      // s, h/d0, rho/d0, w
-inline constexpr std::size_t correction_terms = 15;      // 1, z_i, z_i z_j (i <= j)
+inline constexpr std::size_t correction_groups = 5;  // s, h/d0, rho/d0, w, a/d0
+// 1, z_i, z_i z_j (i <= j), and s z_i z_j (i <= j): 1 + 5 + 15 + 15.
+inline constexpr std::size_t correction_terms = 36;
 
 struct Correction {
   // What it was fitted for: a campaign's [shell_fe] options and nu must match (fitted_for()).
@@ -61,7 +63,7 @@ enum class OptionNames { campaign_keys, command_flags };
 void require_fitted_for(const Correction& correction, const ShellFeOptions& options, const Instrument& instrument,
                         std::string_view location, OptionNames names = OptionNames::campaign_keys);
 
-// ln of the four groups of a measured tube; k is the tube's own stiffness (after the sensor).
+// ln of the five groups of a measured tube; k is the tube's own stiffness (after the sensor).
 std::array<double, correction_groups> correction_log_groups(double k_tube, const TubeDiameters& diameters, double h,
                                                             double probe_radius, const Correction& correction);
 
@@ -109,17 +111,11 @@ std::vector<TrainingPoint> read_training_csv(const std::string& path);
 // Whether a row is held out of the fit (every fifth index) to test the correction.
 inline bool held_out(const TrainingPoint& point) { return point.index % 5 == 4; }
 
-// The rows the correction is fitted to and tested on: the physiological stiffness (0.5-10 N/m)
-// and stretches d/d0 up to 1.3. The training design's stiffest tubes (k up to 15 N/m, p up to
-// 2.6 MPa: no Arabidopsis tube) and its tubes close to the log law's pressure maximum (d/d0
-// 1.3-1.41 of the burst's 1.535, where the response to p steepens) pulled the quadratic away
-// from the rest: with them the largest held-out error was 4.8 %, without them 1.8 %
-// (src/correction/README.md). Tubes beyond get outside_correction.
+// The rows the correction is fitted to and tested on: the physiological stiffness, k <= 10 N/m.
+// The training design's stiffest tubes (k up to 15 N/m, p up to 2.6 MPa) are no Arabidopsis
+// tube's; tubes stiffer than every fitted one get outside_correction through w's range.
 inline constexpr double correction_max_stiffness = 10.0;  // N/m
-inline constexpr double correction_max_stretch = 1.3;     // d/d0
-inline bool in_training_envelope(const TrainingPoint& point) {
-  return point.ok && point.k <= correction_max_stiffness && point.d <= correction_max_stretch * point.d0;
-}
+inline bool in_training_envelope(const TrainingPoint& point) { return point.ok && point.k <= correction_max_stiffness; }
 
 // Least-squares fit of both polynomials to the fitting rows (ok and not held out) for the model
 // options the data were made with. InputError when fewer rows than twice the terms remain.
