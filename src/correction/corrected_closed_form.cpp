@@ -165,7 +165,8 @@ void CorrectedTurgorModulus::evaluate(SampleBlock& block) const {
   }
 }
 
-Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOptions& options, double poisson_ratio) {
+Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOptions& options, double poisson_ratio,
+                          int held_out_fold) {
   Correction correction;
   correction.law = options.law;
   correction.substrate = options.substrate;
@@ -181,7 +182,7 @@ Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOp
   std::vector<std::array<double, correction_groups>> groups;
   std::vector<double> modulus_target, ratio_target;
   for (const TrainingPoint& point : points) {
-    if (!in_training_envelope(point) || held_out(point)) continue;
+    if (!in_training_envelope(point) || held_out(point, held_out_fold)) continue;
     instrument.probe_radius_m = point.rho;
     const TubeDiameters diameters = diameters_in_si(point.d, point.d0);
     const TurgorResult turgor = invert_turgor(point.k, diameters, instrument);

@@ -108,8 +108,12 @@ struct TrainingPoint {
 // InputError naming the file and line of a malformed row.
 std::vector<TrainingPoint> read_training_csv(const std::string& path);
 
-// Whether a row is held out of the fit (every fifth index) to test the correction.
-inline bool held_out(const TrainingPoint& point) { return point.index % 5 == 4; }
+// Whether a row is held out of the fit to test the correction: the shipped fit holds out fold 4
+// (every fifth index: 4, 9, 14, ...); cross-validation holds out each fold in turn.
+inline constexpr int correction_folds = 5;
+inline bool held_out(const TrainingPoint& point, int fold = correction_folds - 1) {
+  return point.index % correction_folds == fold;
+}
 
 // The rows the correction is fitted to and tested on: the physiological stiffness, k <= 10 N/m.
 // The training design's stiffest tubes (k up to 15 N/m, p up to 2.6 MPa) are no Arabidopsis
@@ -117,9 +121,11 @@ inline bool held_out(const TrainingPoint& point) { return point.index % 5 == 4; 
 inline constexpr double correction_max_stiffness = 10.0;  // N/m
 inline bool in_training_envelope(const TrainingPoint& point) { return point.ok && point.k <= correction_max_stiffness; }
 
-// Least-squares fit of both polynomials to the fitting rows (ok and not held out) for the model
-// options the data were made with. InputError when fewer rows than twice the terms remain.
-Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOptions& options, double poisson_ratio);
+// Least-squares fit of both polynomials to the fitting rows (in the envelope and not in the
+// held-out fold) for the model options the data were made with. InputError when fewer rows than
+// twice the terms remain.
+Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOptions& options, double poisson_ratio,
+                          int held_out_fold = correction_folds - 1);
 
 // The C++ text of shipped_correction.inc for `correction` (every number to 17 digits).
 std::string correction_source(const Correction& correction);
