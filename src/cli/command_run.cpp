@@ -138,7 +138,11 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
                  where, resuming ? "samples" : from_flag ? "--samples" : "[campaign] samples");
     // Finite-element samples take minutes each: how long the run will take, before it starts.
     if (const auto time = estimate_shell_fe_time(*prepared); time && settings.progress != ProgressMode::none) {
-      std::cerr << "growthuq run: " << describe_shell_fe_time(*time, pool.size()) << std::flush;
+      std::string text = describe_shell_fe_time(*time, pool.size());
+      // The checkpoint's finished samples are read later, by the pool: the count above is the
+      // whole run's, so for a resumed run it bounds the time from above.
+      if (resuming) text.insert(text.size() - 1, "; at most that: the samples the checkpoint holds are not run again");
+      std::cerr << "growthuq run: " << text << std::flush;
     }
   });
 
