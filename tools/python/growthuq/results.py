@@ -29,6 +29,11 @@ class Results:
     fits: pd.DataFrame          # raw-data lines: line and the fits table (chosen law per variable)
     fit_parameters: pd.DataFrame  # raw-data lines: line, variable, unit, family, chosen, parameter, value
     dataset: xr.Dataset         # the sample columns and status as (line, sample) arrays
+    # The data uncertainty (campaigns/README.md, "Data uncertainty"); empty frames when the
+    # campaign ran no bootstrap or compared no lines.
+    data_uncertainty: pd.DataFrame = field(default_factory=pd.DataFrame)  # the rows of data_uncertainty.csv, campaign order
+    comparisons: pd.DataFrame = field(default_factory=pd.DataFrame)  # the rows of comparisons.csv (line_a / line_b)
+    letters: pd.DataFrame = field(default_factory=pd.DataFrame)      # the rows of letters.csv (quantity, line, letters)
     attrs: dict = field(default_factory=dict)  # root attributes: seed, kappa, samples_per_line, campaign_text, ...
     report: str = ""            # stdout of the run, when the results come from growthuq.run
 
@@ -84,6 +89,18 @@ def _line_tables(h5, lines, name):
     combined = pd.concat(frames, ignore_index=True)
     combined.attrs["units"] = frames[0].attrs.get("units", {})
     return _in_line_order(combined, lines)
+
+
+def _root_table(h5, name, lines, line_columns):
+    """The root table `name` (data_uncertainty, line_comparisons, line_letters) with its line
+    columns as ordered categoricals of the campaign's order, rows as stored; an empty frame when
+    the run wrote none."""
+    if name not in h5:
+        return pd.DataFrame()
+    frame = _table(h5[name])
+    for column in line_columns:
+        frame[column] = pd.Categorical(frame[column], categories=lines, ordered=True)
+    return frame
 
 
 def _long_matrix(rows, line, matrix, row_names, column_names, values):
@@ -174,7 +191,12 @@ def load(results):
         correlations = _correlations(h5, lines)
         fits = _line_tables(h5, lines, "fits")
         fit_parameters = _line_tables(h5, lines, "fit_parameters")
+        data_uncertainty = _root_table(h5, "data_uncertainty", lines, ["line"])
+        if not data_uncertainty.empty:  # in the campaign's order, as summary
+            data_uncertainty = _in_line_order(data_uncertainty, lines)
+        comparisons = _root_table(h5, "line_comparisons", lines, ["line_a", "line_b"])
+        letters = _root_table(h5, "line_letters", lines, ["line"])
     dataset = _combined([_line_dataset(path, line) for line in lines], lines)
     dataset.attrs = {name: value for name, value in attrs.items() if not isinstance(value, list)}
     return Results(path, lines, _samples_frame(dataset, lines), summary, correlations, fits, fit_parameters,
-                   dataset, attrs)
+                   dataset, data_uncertainty=data_uncertainty, comparisons=comparisons, letters=letters, attrs=attrs)

@@ -176,6 +176,12 @@ class RunAndLoad(unittest.TestCase):
         np.testing.assert_allclose(achieved["spearman"], 1.0, rtol=0, atol=1e-12)
         self.assertEqual(set(correlations[correlations["matrix"] == "target"]["line"]), {"wild_type"})
 
+    def test_data_uncertainty_is_data_uncertainty_csv_and_no_comparison_of_one_raw_line(self):
+        csv = pd.read_csv(self.out / "data_uncertainty.csv", float_precision="round_trip")
+        assert_frame_is_csv(self, self.results.data_uncertainty, in_campaign_order(csv, self.results.lines))
+        self.assertTrue(self.results.comparisons.empty)  # one line given by raw data: nothing to compare
+        self.assertTrue(self.results.letters.empty)
+
     def test_fits_as_numbers(self):
         fits, parameters = self.results.fits, self.results.fit_parameters
         self.assertEqual(set(fits["line"]), {"xxt1_xxt2"})
@@ -265,6 +271,58 @@ class FindCli(unittest.TestCase):
             with self.assertRaises(growthuq.ResultsError) as caught:
                 growthuq.load(empty)
         self.assertIn("results.h5: no such file", str(caught.exception))
+
+
+
+def assert_frame_is_csv(test, frame, csv):
+    """Same columns, rows and values (text as text, numbers exactly, empty as NaN)."""
+    test.assertEqual(list(frame.columns), list(csv.columns))
+    test.assertEqual(len(frame), len(csv))
+    for column in csv.columns:
+        if frame[column].dtype == object or isinstance(frame[column].dtype, pd.CategoricalDtype):
+            test.assertEqual(list(frame[column].astype(str)), list(csv[column].fillna("").astype(str)), column)
+        else:
+            np.testing.assert_array_equal(frame[column].to_numpy(dtype=float), csv[column].to_numpy(dtype=float),
+                                          err_msg=column)
+
+
+class LineComparisons(unittest.TestCase):
+    """Two lines given by raw data, listed against the alphabet: the bootstrap's comparisons and
+    letters as comparisons.csv and letters.csv hold them, line columns in the campaign's order."""
+
+    def test_comparisons_and_letters_are_the_csvs(self):
+        with tempfile.TemporaryDirectory(prefix="growthuq-python-") as scratch:
+            work = Path(scratch)
+            (work / "campaign.ini").write_text(f"""[campaign]
+name = comparisons
+seed = 11
+samples = 40
+outputs = p, E
+output_dir = out
+formats = csv, hdf5
+
+[instrument]
+probe_radius_um = 0.5
+
+[data_uncertainty]
+replicates = 30
+
+[line xeg113]
+raw = {REPOSITORY}/distributions/example_raw/xeg113/raw.ini
+
+[line wild_type]
+raw = {REPOSITORY}/distributions/example_raw/wild_type/raw.ini
+""")
+            results = growthuq.run(work / "campaign.ini", cwd=work)
+            read = {name: pd.read_csv(work / "out" / f"{name}.csv", keep_default_na=False, na_values=[""],
+                                      float_precision="round_trip")
+                    for name in ("comparisons", "letters", "data_uncertainty")}
+            self.assertGreater(len(read["comparisons"]), 0)
+            assert_frame_is_csv(self, results.comparisons, read["comparisons"])
+            assert_frame_is_csv(self, results.letters, read["letters"])
+            assert_frame_is_csv(self, results.data_uncertainty, in_campaign_order(read["data_uncertainty"], results.lines))
+            self.assertEqual(list(results.comparisons["line_a"].cat.categories), ["xeg113", "wild_type"])
+            self.assertEqual(list(results.letters["line"].cat.categories), ["xeg113", "wild_type"])
 
 
 if __name__ == "__main__":
