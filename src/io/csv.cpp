@@ -33,12 +33,20 @@ std::vector<std::string> split_cells(std::string_view line, char separator, cons
       cell += c;
     }
   }
-  if (quoted) throw InputError(location, "a quoted cell is not closed on this line");
+  if (quoted) throw InputError(location, "a quoted cell opened in this row is not closed before the end of the file");
   cells.emplace_back(trim(cell));
   return cells;
 }
 
 // How many times `c` stands outside double quotes in `line`.
+// Whether `record` ends inside a quoted cell: an odd number of quotes ("" inside a cell counts
+// two).
+bool ends_inside_quotes(std::string_view record) {
+  std::size_t quotes = 0;
+  for (const char c : record) quotes += c == '"' ? 1 : 0;
+  return quotes % 2 == 1;
+}
+
 std::size_t count_unquoted(std::string_view line, char c) {
   std::size_t count = 0;
   bool quoted = false;
@@ -122,12 +130,28 @@ CsvTable read_csv(const std::string& path) {
   long line_number = 0;
   std::size_t start = 0;
   while (start < text.size()) {
-    const std::size_t end = std::min(text.find('\n', start), text.size());
-    const std::string_view line = trim(text.substr(start, end - start));
-    start = end + 1;
+    std::size_t end = std::min(text.find('\n', start), text.size());
+    std::string line(trim(text.substr(start, end - start)));
     ++line_number;
-    if (line.empty() || line.front() == '#') continue;
-    const std::string location = file_location(table.path, line_number);
+    const long first_line = line_number;
+    if (line.empty() || line.front() == '#') {
+      start = end + 1;
+      continue;
+    }
+    // A quoted cell may hold line breaks (a spreadsheet cell with several lines, as Excel writes
+    // it; csv_cell quotes them too): a row whose quotes are open at a line's end goes on with the
+    // next line, and its messages name the line it starts on.
+    while (ends_inside_quotes(line) && end < text.size()) {
+      start = end + 1;
+      end = std::min(text.find('\n', start), text.size());
+      std::string_view next = text.substr(start, end - start);
+      if (!next.empty() && next.back() == '\r') next.remove_suffix(1);
+      line += '\n';
+      line += next;
+      ++line_number;
+    }
+    start = end + 1;
+    const std::string location = file_location(table.path, first_line);
     if (table.header.empty()) table.separator = header_separator(line, location);
     auto cells = split_cells(line, table.separator, location);
     if (table.header.empty()) {
@@ -150,7 +174,7 @@ CsvTable read_csv(const std::string& path) {
       }
     }
     table.rows.push_back(std::move(cells));
-    table.line_numbers.push_back(line_number);
+    table.line_numbers.push_back(first_line);
   }
   if (table.header.empty()) throw InputError(table.path, "empty file: expected a header row of column names");
   return table;

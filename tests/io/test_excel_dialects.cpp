@@ -39,6 +39,27 @@ TEST_CASE("Excel's CSV UTF-8: the byte-order mark is skipped, CRLF and quoted ce
   CHECK(table.line_numbers == std::vector<long>{2, 3});
 }
 
+TEST_CASE("a spreadsheet cell of several lines: the row goes on to its closing quote, named by its first line") {
+  ScratchDirectory scratch("excel_multiline");
+  const std::string path = (scratch.root / "tubes.csv").string();
+  // As Excel writes a cell with Alt+Enter in it: LF inside the quotes, CRLF between rows.
+  spit(path, bom + "tube,d_um,remark\r\nT1,12.5,\"bent\nthen \"\"fixed\"\"\"\r\n# a comment \"\r\nT2,13,\r\n");
+  const CsvTable table = read_csv(path);
+  REQUIRE(table.rows.size() == 2);
+  CHECK(table.rows[0][2] == "bent\nthen \"fixed\"");
+  CHECK(table.rows[1][0] == "T2");
+  CHECK(table.line_numbers == std::vector<long>{2, 5});
+  // What the engine's own writer makes of such a cell reads back the same.
+  CsvWriter writer({"remark", "n"});
+  writer.add_row({"two\nlines, \"quoted\"", "1"});
+  spit(path, writer.text());
+  CHECK(read_csv(path).rows.at(0).at(0) == "two\nlines, \"quoted\"");
+  // A quote never closed: one error naming the row's first line.
+  spit(path, "tube,remark\nT1,ok\nT2,\"open\nT3,x\n");
+  CHECK_THROWS_WITH_AS(read_csv(path), (path + ":3: a quoted cell opened in this row is not closed before the end of the file").c_str(),
+                       InputError);
+}
+
 TEST_CASE("Excel's CSV where the decimal separator is a comma: ';' between cells, decimal commas") {
   ScratchDirectory scratch("excel_semicolon");
   const std::string path = (scratch.root / "tubes.csv").string();

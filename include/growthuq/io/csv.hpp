@@ -29,7 +29,8 @@ struct CsvTable {
 };
 
 // Reads `path`. Lines starting with '#' and blank lines are skipped (headers of synthetic
-// data say so in '#' lines). Cells may be double-quoted ("a,b"). A UTF-8 byte-order mark is
+// data say so in '#' lines). Cells may be double-quoted ("a,b"), and a quoted cell may span
+// lines (a spreadsheet cell of several lines; messages name the row's first line). A UTF-8 byte-order mark is
 // skipped and CRLF line ends are read like LF (Excel's "CSV UTF-8").
 // The separator is the header's: a header with ';' and no ',' outside quotes makes a
 // semicolon-separated file with decimal commas (Excel's CSV where the decimal separator is a
