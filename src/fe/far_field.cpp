@@ -50,6 +50,22 @@ double pressure_group(double l, void* params) {
 
 double negative_pressure_group(double l, void* params) { return -pressure_group(l, params); }
 
+// The root of f in [low, high], where f changes sign, by GSL's Brent solver to 1e-15.
+double brent_root(gsl_function& f, double low, double high) {
+  detail::gsl_errors_return();
+  std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
+      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), gsl_root_fsolver_free);
+  gsl_root_fsolver_set(solver.get(), &f, low, high);
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    gsl_root_fsolver_iterate(solver.get());
+    if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver.get()), gsl_root_fsolver_x_upper(solver.get()), 0.0,
+                               1e-15) == GSL_SUCCESS) {
+      break;
+    }
+  }
+  return gsl_root_fsolver_root(solver.get());
+}
+
 }  // namespace
 
 FarFieldLaw far_field_law(MaterialLaw law) {
@@ -103,7 +119,6 @@ FarFieldInflation far_field_inflation(FarFieldLaw law, double pressure_over_E, d
   if (target > peak.pressure_group) return {peak.hoop_stretch, peak.axial_stretch, peak.thickness_stretch, true};
   if (target == peak.pressure_group) return {peak.hoop_stretch, peak.axial_stretch, peak.thickness_stretch, false};
   // G rises from 0 at l = 1 to its maximum: one root in (1, l_peak), bracketed.
-  detail::gsl_errors_return();
   struct Shifted {
     std::pair<FarFieldLaw, double> params;
     double target;
@@ -113,17 +128,7 @@ FarFieldInflation far_field_inflation(FarFieldLaw law, double pressure_over_E, d
                    return pressure_group(l, &s->params) - s->target;
                  },
                  &shifted};
-  std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
-      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), gsl_root_fsolver_free);
-  gsl_root_fsolver_set(solver.get(), &f, 1.0, peak.hoop_stretch);
-  for (int iteration = 0; iteration < 200; ++iteration) {
-    gsl_root_fsolver_iterate(solver.get());
-    if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver.get()), gsl_root_fsolver_x_upper(solver.get()), 0.0,
-                               1e-15) == GSL_SUCCESS) {
-      break;
-    }
-  }
-  const FarFieldState state = far_field_state(law, gsl_root_fsolver_root(solver.get()), nu);
+  const FarFieldState state = far_field_state(law, brent_root(f, 1.0, peak.hoop_stretch), nu);
   return {state.hoop_stretch, state.axial_stretch, state.thickness_stretch, false};
 }
 
@@ -146,25 +151,14 @@ FarFieldTurgidInflation far_field_inflation_to_turgid_thickness(FarFieldLaw law,
   };
   if (excess(peak.hoop_stretch, &target) > 0.0) return burst();
   // Lower end of the bracket: near l = 1, G ~ c (l - 1), so the turgid thickness there is about
-  // (p/E) / (c (l - 1)); step l - 1 down until it exceeds h (at most 1e-300 away).
+  // (p/E) / (c (l - 1)); halve l - 1 until it exceeds h (below 1e-15, p/E is too small to stretch the wall).
   double low = 1.0 + 0.5 * (peak.hoop_stretch - 1.0);
   while (excess(low, &target) <= 0.0) {
     low = 1.0 + 0.5 * (low - 1.0);
     if (low - 1.0 < 1e-15) return {{1.0, 1.0, 1.0, false}, h_over_d0};  // p/E negligible: no stretch
   }
-  detail::gsl_errors_return();
   gsl_function f{excess, &target};
-  std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
-      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), gsl_root_fsolver_free);
-  gsl_root_fsolver_set(solver.get(), &f, low, peak.hoop_stretch);
-  for (int iteration = 0; iteration < 200; ++iteration) {
-    gsl_root_fsolver_iterate(solver.get());
-    if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver.get()), gsl_root_fsolver_x_upper(solver.get()), 0.0,
-                               1e-15) == GSL_SUCCESS) {
-      break;
-    }
-  }
-  const FarFieldState state = far_field_state(law, gsl_root_fsolver_root(solver.get()), nu);
+  const FarFieldState state = far_field_state(law, brent_root(f, low, peak.hoop_stretch), nu);
   if (!(state.thickness_stretch > 0.0)) return burst();
   return {{state.hoop_stretch, state.axial_stretch, state.thickness_stretch, false},
           pressure_over_E / state.pressure_group};
