@@ -9,44 +9,19 @@
 #include "campaign/campaign_models.hpp"
 #include "growthuq/campaign/campaign_file.hpp"
 #include "growthuq/core/error.hpp"
+#include "support/campaign_text.hpp"
 
 using namespace growthuq;
+using namespace growthuq::testing;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct CampaignFolder {
-  fs::path root = fs::temp_directory_path() / "growthuq_test_campaign_fidelity";
-  CampaignFolder() {
-    fs::remove_all(root);
-    fs::create_directories(root);
-    std::ofstream(root / "wt.ini") << "x\n";
-    std::ofstream(root / "m1.ini") << "x\n";
-  }
-  ~CampaignFolder() { fs::remove_all(root); }
-  std::string path() const { return (root / "c.ini").string(); }
-};
 
 const std::string valid =
     "[campaign]\nname = test\nseed = 7\nsamples = 10\noutputs = p, E\noutput_dir = out\n"
     "[instrument]\nprobe_radius_um = 0.5\n"
     "[line wt]\ndistributions = wt.ini\n"
     "[line m1]\ndistributions = m1.ini\n";
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  REQUIRE(at != std::string::npos);
-  return text.replace(at, from.size(), to);
-}
-
-std::string parse_error(const std::string& text, const std::string& file) {
-  try {
-    parse_campaign(text, file);
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "no error";
-}
 
 std::vector<std::string> model_names(const Campaign& campaign, Fidelity fidelity) {
   std::vector<std::string> names;
@@ -57,7 +32,7 @@ std::vector<std::string> model_names(const Campaign& campaign, Fidelity fidelity
 }  // namespace
 
 TEST_CASE("fidelity: the three names, the old name, the default, and a line's own") {
-  const CampaignFolder folder;
+  const CampaignFolder folder("campaign_fidelity", {"wt.ini", "m1.ini"});
   CHECK(parse_campaign(valid, folder.path()).fidelity == Fidelity::closed_form);
   const auto with = [&](const std::string& name) {
     return parse_campaign(replaced(valid, "output_dir = out\n", "output_dir = out\nfidelity = " + name + "\n"), folder.path());
@@ -80,7 +55,7 @@ TEST_CASE("fidelity: the three names, the old name, the default, and a line's ow
 }
 
 TEST_CASE("[shell_fe]: every key read into the model's options") {
-  const CampaignFolder folder;
+  const CampaignFolder folder("campaign_fidelity", {"wt.ini", "m1.ini"});
   const Campaign campaign = parse_campaign(
       valid + "[shell_fe]\nlaw = stvk\nmesh = coarse\nsubstrate = off\nbending = off\nhalf_model = off\n"
               "tube_length_um = 80\nprobe_distance_um = 12.5\nforce_window_uN = 0.5, 3\nchunk_size = 3\n",
@@ -105,7 +80,7 @@ TEST_CASE("[shell_fe]: every key read into the model's options") {
 }
 
 TEST_CASE("fidelity and [shell_fe] mistakes: one error naming file, line, key, value and what was expected") {
-  const CampaignFolder folder;
+  const CampaignFolder folder("campaign_fidelity", {"wt.ini", "m1.ini"});
   const std::string file = folder.path();
   const auto error_of = [&](const std::string& text) { return parse_error(text, file); };
   CHECK(error_of(replaced(valid, "output_dir = out\n", "output_dir = out\nfidelity = fem\n")) ==
@@ -133,7 +108,7 @@ TEST_CASE("fidelity and [shell_fe] mistakes: one error naming file, line, key, v
 }
 
 TEST_CASE("each fidelity plans its own turgor and modulus models, the rest alike") {
-  const CampaignFolder folder;
+  const CampaignFolder folder("campaign_fidelity", {"wt.ini", "m1.ini"});
   const Campaign campaign = parse_campaign(valid, folder.path());
   CHECK(model_names(campaign, Fidelity::closed_form) ==
         std::vector<std::string>{"thin_shell_turgor", "thin_shell_modulus", "viscosity", "growth"});
@@ -144,7 +119,7 @@ TEST_CASE("each fidelity plans its own turgor and modulus models, the rest alike
 }
 
 TEST_CASE("fidelity corrected refuses model options it was not fitted for, naming the key") {
-  const CampaignFolder folder;
+  const CampaignFolder folder("campaign_fidelity", {"wt.ini", "m1.ini"});
   const auto models_of = [&](const std::string& section) {
     return campaign_models(parse_campaign(valid + "[shell_fe]\n" + section, folder.path()), Fidelity::corrected);
   };

@@ -7,23 +7,13 @@
 
 #include "growthuq/campaign/campaign_file.hpp"
 #include "growthuq/core/error.hpp"
+#include "support/campaign_text.hpp"
 
 using namespace growthuq;
+using namespace growthuq::testing;
 namespace fs = std::filesystem;
 
 namespace {
-
-// A folder with a campaign's neighbours: two line files and a matrix file.
-struct CampaignFolder {
-  fs::path root = fs::temp_directory_path() / "growthuq_test_campaign";
-  CampaignFolder() {
-    fs::remove_all(root);
-    fs::create_directories(root / "lines");
-    for (const char* name : {"lines/wt.ini", "lines/m1.ini", "lines/matrix.csv", "lines/raw.ini"}) std::ofstream(root / name) << "x\n";
-  }
-  ~CampaignFolder() { fs::remove_all(root); }
-  std::string path() const { return (root / "c.ini").string(); }
-};
 
 const std::string valid =
     "[campaign]\nname = test\nseed = 7\nsamples = 300\noutputs = p, E, eta, v\noutput_dir = out/test\n"
@@ -32,26 +22,10 @@ const std::string valid =
     "[line wt]\ndistributions = lines/wt.ini\nrank_correlation = physics\n"
     "[line m1]\ndistributions = lines/m1.ini\nrank_correlation = lines/matrix.csv\n";
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  REQUIRE(at != std::string::npos);
-  return text.replace(at, from.size(), to);
-}
-
-// The message parse_campaign gives for `text` read as `file`, or "no error".
-std::string parse_error(const std::string& text, const std::string& file) {
-  try {
-    parse_campaign(text, file);
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "no error";
-}
-
 }  // namespace
 
 TEST_CASE("a valid campaign is read with SI values and resolved paths") {
-  const CampaignFolder folder;
+  const CampaignFolder folder("campaign", {"lines/wt.ini", "lines/m1.ini", "lines/matrix.csv", "lines/raw.ini"});
   const Campaign campaign = parse_campaign(valid, folder.path());
   CHECK(campaign.name == "test");
   CHECK(campaign.seed == 7);
@@ -71,7 +45,7 @@ TEST_CASE("a valid campaign is read with SI values and resolved paths") {
 }
 
 TEST_CASE("command-line overrides") {
-  const CampaignFolder folder;
+  const CampaignFolder folder("campaign", {"lines/wt.ini", "lines/m1.ini", "lines/matrix.csv", "lines/raw.ini"});
   Campaign campaign = parse_campaign(valid, folder.path());
   apply_overrides(campaign, {.samples = 50, .seed = 9, .output_dir = "elsewhere", .lines = "wt", .formats = "hdf5"});
   CHECK(campaign.samples == 50);
@@ -90,7 +64,7 @@ TEST_CASE("command-line overrides") {
 }
 
 TEST_CASE("each mistake is one error naming file and line") {
-  const CampaignFolder folder;
+  const CampaignFolder folder("campaign", {"lines/wt.ini", "lines/m1.ini", "lines/matrix.csv", "lines/raw.ini"});
   const std::string file = folder.path();
   const auto error_of = [&](const std::string& text) { return parse_error(text, file); };
   CHECK(error_of(replaced(valid, "seed = 7", "seed = -7")) == file + ":3: seed = '-7': expected a whole number from 0 to 18446744073709551615");
@@ -118,7 +92,7 @@ TEST_CASE("each mistake is one error naming file and line") {
 }
 
 TEST_CASE("a line comes from exactly one of a line file and raw data; the data bootstrap's section") {
-  const CampaignFolder folder;
+  const CampaignFolder folder("campaign", {"lines/wt.ini", "lines/m1.ini", "lines/matrix.csv", "lines/raw.ini"});
   const std::string file = folder.path();
   const std::string raw = replaced(valid, "[line m1]\ndistributions = lines/m1.ini", "[line m1]\nraw = lines/raw.ini");
   const Campaign campaign = parse_campaign(raw + "[data_uncertainty]\nreplicates = 200\nsamples = 500\n", file);
@@ -164,7 +138,7 @@ TEST_CASE("a line comes from exactly one of a line file and raw data; the data b
 }
 
 TEST_CASE("a list item given twice and an empty required value are errors, not silently doubled or empty") {
-  const CampaignFolder folder;
+  const CampaignFolder folder("campaign", {"lines/wt.ini", "lines/m1.ini", "lines/matrix.csv", "lines/raw.ini"});
   const std::string file = folder.path();
   const auto error_of = [&](const std::string& text) { return parse_error(text, file); };
   // outputs = p, p would give two summary rows of p.
