@@ -26,11 +26,11 @@ std::string duration(double seconds) {
 
 double shell_fe_seconds_per_sample(ShellFeMesh mesh) {
   switch (mesh) {
-    case ShellFeMesh::coarse: return 4.0;
-    case ShellFeMesh::standard: return 40.0;
-    case ShellFeMesh::fine: return 160.0;
+    case ShellFeMesh::coarse: return 9.0;
+    case ShellFeMesh::standard: return 55.0;
+    case ShellFeMesh::fine: return 220.0;
   }
-  return 40.0;
+  return 55.0;
 }
 
 std::optional<ShellFeTimeEstimate> estimate_shell_fe_time(const PreparedCampaign& prepared) {

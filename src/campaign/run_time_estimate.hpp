@@ -15,11 +15,14 @@
 namespace growthuq {
 
 // Seconds of one core per shell_fe sample (one inverse: one force curve and up to six
-// inflations) at a mesh level, measured on this project's 2-core machine (2026-12-05): coarse
-// 2.6-3.2 s per sample over the five Arabidopsis lines (tools/bench/bench-fe-campaign, failed
-// samples included), rounded up to 4; default 32 s per forward curve, the median over the 86
-// training tubes of src/correction/training.csv, plus the inflations, 40; fine four times that
-// (src/fe/README.md, "Speed": 575 s against 149 s at the test tube).
+// inflations) at a mesh level, measured on this project's 2-core machine (2026-12-05), means
+// with the failed samples in (a campaign's time is the sum, and a sample that does not converge
+// costs several that do): coarse 8.9 s per sample over the first 270 samples of
+// campaigns/published_scale.ini (wild type and xxt1_xxt2, one process alone), rounded to 9;
+// default 54 s per forward curve, the mean over the 245 training tubes of
+// src/correction/training.csv, plus the inflations, 55; fine four times that (src/fe/README.md,
+// "Speed": 575 s against 149 s at the test tube). A campaign's own tubes may differ by a factor
+// of two either way.
 double shell_fe_seconds_per_sample(ShellFeMesh mesh);
 
 struct ShellFeTimeEstimate {

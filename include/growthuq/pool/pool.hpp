@@ -79,10 +79,11 @@ class Pool {
   // for all of them, so they stop at the same point and nothing waits for a rank that left.
   void stop_when(std::function<int()> request) { stop_request_ = std::move(request); }
 
-  // Chunks each worker keeps assigned ahead of the one it computes (the MPI pool; 3 by default):
-  // a queue hides the coordinator's own chunks when chunks take microseconds, but chunks of
-  // seconds or minutes (finite-element samples) balance best with 1, since a queued chunk can
-  // no longer go to whichever process frees up first. Every process sets the same value.
+  // Chunks assigned to each worker at a time, the one it computes included (the MPI pool; 3 by
+  // default): rank 0 computes chunks too and answers workers only between its own, so a queue
+  // keeps a worker busy meanwhile; chunks of seconds or minutes (finite-element samples) want a
+  // short one (2), since a queued chunk can no longer go to whichever process frees up first.
+  // Every process sets the same value.
   void set_queued_chunks(int chunks) { queued_chunks_ = chunks < 1 ? 1 : chunks; }
   int queued_chunks() const { return queued_chunks_; }
 
