@@ -28,16 +28,21 @@ struct Errors {
   double max_p = 0, max_E = 0, max_closed_p = 0, max_closed_E = 0;
 };
 
+// The corrected inverse of a training row's measured tube (its own probe, the correction's nu).
+CorrectedInverse corrected_for(const TrainingPoint& point, const Correction& correction) {
+  Instrument instrument;
+  instrument.probe_radius_m = point.rho;
+  instrument.poisson_ratio = correction.poisson_ratio;
+  return corrected_inverse(point.k, diameters_in_si(point.d, point.d0), point.h, instrument, correction);
+}
+
 // The largest relative errors of the corrected and the closed form against the training rows'
 // finite-element p and E, over the rows `held` says.
 Errors errors_of(const std::vector<TrainingPoint>& points, const Correction& correction, bool held) {
   Errors errors;
   for (const TrainingPoint& point : points) {
     if (!in_training_envelope(point) || held_out(point) != held) continue;
-    Instrument instrument;
-    instrument.probe_radius_m = point.rho;
-    instrument.poisson_ratio = correction.poisson_ratio;
-    const CorrectedInverse result = corrected_inverse(point.k, diameters_in_si(point.d, point.d0), point.h, instrument, correction);
+    const CorrectedInverse result = corrected_for(point, correction);
     if (result.status == SampleStatus::outside_correction) {
       ++errors.outside;
       continue;
@@ -59,10 +64,7 @@ std::string errors_table(const std::vector<TrainingPoint>& points, const Correct
                     "E_closed_form_MPa", "p_corrected_MPa", "E_corrected_MPa", "status"});
   for (const TrainingPoint& point : points) {
     if (!in_training_envelope(point)) continue;
-    Instrument instrument;
-    instrument.probe_radius_m = point.rho;
-    instrument.poisson_ratio = correction.poisson_ratio;
-    const CorrectedInverse r = corrected_inverse(point.k, diameters_in_si(point.d, point.d0), point.h, instrument, correction);
+    const CorrectedInverse r = corrected_for(point, correction);
     const auto mpa = [](double pa) { return std::isfinite(pa) ? format_double(pa * 1e-6) : std::string(); };
     writer.add_row({std::to_string(point.index), held_out(point) ? "1" : "0", format_double(point.d / point.d0),
                     format_double(point.h / point.d), format_double(point.rho / point.d), mpa(point.p), mpa(point.E),
@@ -85,11 +87,7 @@ CrossValidation cross_validate(const std::vector<TrainingPoint>& points, double 
     const Correction correction = fit_correction(points, ShellFeOptions{}, poisson_ratio, fold);
     for (const TrainingPoint& point : points) {
       if (!in_training_envelope(point) || !held_out(point, fold)) continue;
-      Instrument instrument;
-      instrument.probe_radius_m = point.rho;
-      instrument.poisson_ratio = poisson_ratio;
-      const CorrectedInverse result =
-          corrected_inverse(point.k, diameters_in_si(point.d, point.d0), point.h, instrument, correction);
+      const CorrectedInverse result = corrected_for(point, correction);
       if (result.status == SampleStatus::outside_correction) ++cv.outside;
       if (result.status != SampleStatus::ok) continue;
       const double error = std::max(std::abs(result.p / point.p - 1), std::abs(result.E / point.E - 1));
