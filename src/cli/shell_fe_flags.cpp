@@ -15,7 +15,7 @@ void ShellFeFlags::declare(po::options_description& options) {
       ("mesh-file", po::value(&mesh_file), "closed triangulated surface (Wavefront .obj or .off), lengths in units "
                                            "of d0 (--geometry file only)")
       ("mesh", po::value(&mesh), "mesh density: coarse, default or fine (omitted: default; each level sqrt(2) finer "
-                                 "than the one before)")
+                                 "than the one before); finer, one level more, for convergence checks")
       ("substrate", po::value(&substrate), "rigid frictionless plane under the tube, opposite the probe: on (default) or off")
       ("bending", po::value(&bending), "Kirchhoff-Love bending: on (default) or off (membrane only)")
       ("half-model", po::value(&half_model), "mirror plane through the tube axis and the probe axis: on (default) or off")

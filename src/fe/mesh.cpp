@@ -218,12 +218,20 @@ TriangleMesh mirrored(const TriangleMesh& half) {
 
 MeshSizing mesh_sizing(MeshLevel level, double probe_radius, double thickness) {
   const double bending_length = std::sqrt(thickness * 0.5);
-  const double scale = level == MeshLevel::coarse ? 1.0
+  const double scale = level == MeshLevel::coarse     ? 1.0
                        : level == MeshLevel::standard ? std::numbers::sqrt2 / 2
-                                                      : 0.5;
+                       : level == MeshLevel::fine     ? 0.5
+                                                      : std::numbers::sqrt2 / 4;
+  // A probe wider than the bending length: the wall no longer wraps it, and the contact patch
+  // shrinks far below both (0.03 d0 under a probe of 0.19 d0 on a wall of bending length 0.16
+  // d0, src/fe/README.md): the finest cell then follows the bending length down to a sixteenth
+  // of it, over a fine region one bending length wide. A ramp over rho from 1 to 1.2 bending
+  // lengths, not a switch, keeps the sizes continuous in the inputs; narrower probes (every
+  // training tube of the corrected form) keep the sizes they had.
+  const double wide = std::clamp((probe_radius / bending_length - 1) / 0.2, 0.0, 1.0);
   MeshSizing s;
-  s.finest = 0.5 * scale * std::min(probe_radius, bending_length);
-  s.fine_radius = std::max(2 * probe_radius, 0.25 * bending_length);
+  s.finest = 0.5 * scale * std::min(probe_radius, bending_length * (1 - 0.875 * wide));
+  s.fine_radius = std::max(0.25 * bending_length, (1 - wide) * 2 * probe_radius + wide * bending_length);
   s.grading = 0.5 * scale;
   s.coarsest = std::max(0.14 * scale, s.finest);
   return s;

@@ -12,7 +12,7 @@
 namespace growthuq::fe {
 
 enum class Geometry { tube, sphere, file };
-enum class MeshLevel { coarse, standard, fine };  // CLI: coarse | default | fine
+enum class MeshLevel { coarse, standard, fine, finer };  // CLI: coarse | default | fine | finer
 
 struct TriangleMesh {
   Eigen::Matrix3Xd positions;             // reference (unstressed) positions, / d0

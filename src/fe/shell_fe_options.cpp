@@ -35,6 +35,7 @@ std::string_view to_string(ShellFeMesh mesh) {
     case ShellFeMesh::coarse: return "coarse";
     case ShellFeMesh::standard: return "default";
     case ShellFeMesh::fine: return "fine";
+    case ShellFeMesh::finer: return "finer";
   }
   return "?";
 }
@@ -56,7 +57,8 @@ ShellFeMesh parse_shell_fe_mesh(std::string_view text, std::string_view location
   if (text == "coarse") return ShellFeMesh::coarse;
   if (text == "default") return ShellFeMesh::standard;
   if (text == "fine") return ShellFeMesh::fine;
-  throw_bad_value(location, key, text, "coarse, default or fine");
+  if (text == "finer") return ShellFeMesh::finer;
+  throw_bad_value(location, key, text, "coarse, default, fine or finer");
 }
 
 bool parse_shell_fe_switch(std::string_view text, std::string_view location, std::string_view key) {

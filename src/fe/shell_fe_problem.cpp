@@ -29,6 +29,7 @@ ForwardProblem make_problem(const ShellFeOptions& options, double plasmolysed_di
     case ShellFeMesh::coarse: problem.mesh = MeshLevel::coarse; break;
     case ShellFeMesh::standard: problem.mesh = MeshLevel::standard; break;
     case ShellFeMesh::fine: problem.mesh = MeshLevel::fine; break;
+    case ShellFeMesh::finer: problem.mesh = MeshLevel::finer; break;
   }
   return problem;
 }

@@ -92,7 +92,7 @@ TEST_CASE("fidelity and [shell_fe] mistakes: one error naming file, line, key, v
   CHECK(error_of(section + "law = neo_hookean\n") ==
         file + ":14: law = 'neo_hookean': expected log (Hencky: Kirchhoff stress = Hooke of the log strain) or stvk (Saint "
                "Venant-Kirchhoff)");
-  CHECK(error_of(section + "mesh = finer\n") == file + ":14: mesh = 'finer': expected coarse, default or fine");
+  CHECK(error_of(section + "mesh = medium\n") == file + ":14: mesh = 'medium': expected coarse, default, fine or finer");
   CHECK(error_of(section + "substrate = yes\n") == file + ":14: substrate = 'yes': expected on or off");
   CHECK(error_of(section + "tube_length_um = 2\n") == file + ":14: tube_length_um = '2': expected a tube length in [5, 1e6] um (default 100)");
   CHECK(error_of(section + "force_window_uN = 4,0.4\n") ==

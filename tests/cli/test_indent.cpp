@@ -144,7 +144,7 @@ TEST_CASE("indent and eval --fidelity: bad input is one line naming the flag, no
       {"indent --p-MPa 0.3 --E-MPa 30 --h-nm 200 --d0-um 5.35 --out c.csv", "--rho-um is required"},
       {"indent --p-MPa 0.3 --E-MPa 30 --h-nm 200 --h0-nm 180 --d0-um 5.35 --rho-um 0.25 --out c.csv", "give the wall thickness once"},
       {std::string("indent ") + tube + " --law cauchy --out c.csv", "--law = 'cauchy': expected log"},
-      {std::string("indent ") + tube_any_mesh + " --mesh medium --out c.csv", "--mesh = 'medium': expected coarse, default or fine"},
+      {std::string("indent ") + tube_any_mesh + " --mesh medium --out c.csv", "--mesh = 'medium': expected coarse, default, fine or finer"},
       {std::string("indent ") + tube + " --substrate yes --out c.csv", "--substrate = 'yes': expected on or off"},
       {std::string("indent ") + tube + " --window-uN 4,0.4 --out c.csv", "--window-uN = '4,0.4'"},
       {std::string("indent ") + tube + " --nu 0.6 --out c.csv", "--nu = '0.6': expected a Poisson ratio in [0, 0.5)"},

@@ -147,6 +147,36 @@ TEST_CASE("mesh sizing: each level sqrt(2) finer, the finest size below probe ra
   CHECK(s.finest / f.finest == doctest::Approx(std::sqrt(2.0)));
   CHECK(c.finest <= 0.5 * 0.05);
   CHECK(c.fine_radius >= std::sqrt(0.01));
+  const MeshSizing r = mesh_sizing(MeshLevel::finer, 0.05, 0.02);
+  CHECK(f.finest / r.finest == doctest::Approx(std::sqrt(2.0)));
+}
+
+// A probe wider than the bending length b = sqrt(h0 / 2): the finest size falls from b / 2 to
+// b / 32 (coarse level) and the fine region from 2 rho to b as rho grows from b to 1.2 b, with
+// no jump anywhere, and a narrower probe keeps the sizes "half the probe radius over twice its
+// radius".
+TEST_CASE("mesh sizing under a probe wider than the bending length: finer cells, continuous in rho") {
+  const double thickness = 0.05;
+  const double b = std::sqrt(0.5 * thickness);
+  for (double rho : {0.3 * b, 0.9 * b, b}) {
+    const MeshSizing s = mesh_sizing(MeshLevel::coarse, rho, thickness);
+    CHECK(s.finest == doctest::Approx(0.5 * rho));
+    CHECK(s.fine_radius == doctest::Approx(2 * rho));
+  }
+  for (double rho : {1.2 * b, 2.0 * b, 10.0 * b}) {
+    const MeshSizing s = mesh_sizing(MeshLevel::coarse, rho, thickness);
+    CHECK(s.finest == doctest::Approx(b / 16));
+    CHECK(s.fine_radius == doctest::Approx(b));
+  }
+  // Continuity: the sizes change by O(step) across the ramp's two ends and inside it.
+  const double step = 1e-7 * b;
+  for (double rho = 0.95 * b; rho < 1.25 * b; rho += 0.01 * b) {
+    const MeshSizing here = mesh_sizing(MeshLevel::coarse, rho, thickness);
+    const MeshSizing next = mesh_sizing(MeshLevel::coarse, rho + step, thickness);
+    CAPTURE(rho / b);
+    CHECK(std::fabs(next.finest - here.finest) < 1e-5 * b);
+    CHECK(std::fabs(next.fine_radius - here.fine_radius) < 1e-5 * b);
+  }
 }
 
 // Where the probe presses, every vertex has valence 6 (counted in the full model on the mirror

@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
     if (flag == "--mesh") options.mesh = mesh_from(value);
     else if (flag == "--repetitions") repetitions = std::atoi(value.c_str());
     else {
-      std::cerr << "bench_fe: unknown option " << flag << " (--mesh coarse|default|fine, --repetitions N)\n";
+      std::cerr << "bench_fe: unknown option " << flag << " (--mesh coarse|default|fine|finer, --repetitions N)\n";
       return 2;
     }
   }

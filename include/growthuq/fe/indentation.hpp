@@ -23,7 +23,7 @@ enum class ShellFeLaw {
   saint_venant_kirchhoff,  // "stvk": second Piola-Kirchhoff stress = Hooke's law of Green's strain
 };
 enum class ShellFeGeometry { tube, sphere, file };
-enum class ShellFeMesh { coarse, standard, fine };  // "coarse" | "default" | "fine"
+enum class ShellFeMesh { coarse, standard, fine, finer };  // "coarse" | "default" | "fine" | "finer"
 
 // The model's options: the same struct is a campaign's [shell_fe] section (keys as named in
 // validate()'s messages). All lengths in m, forces in N.
@@ -50,7 +50,7 @@ struct ShellFeOptions {
 
 std::string_view to_string(ShellFeLaw);       // "log", "stvk"
 std::string_view to_string(ShellFeGeometry);  // "tube", "sphere", "file"
-std::string_view to_string(ShellFeMesh);      // "coarse", "default", "fine"
+std::string_view to_string(ShellFeMesh);      // "coarse", "default", "fine", "finer"
 // The option's value from its text as typed (a campaign's [shell_fe] value or a command's flag,
 // one parser and one message for both); InputError("<location>", "<key> = '<text>': expected
 // ...") otherwise.
