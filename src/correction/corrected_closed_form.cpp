@@ -107,7 +107,9 @@ CorrectedInverse corrected_inverse(double k_measured, const TubeDiameters& diame
   result.closed_form_E = modulus.E;
   const double k_tube = tube_stiffness(k_measured, instrument);
   std::array<double, correction_groups> z{};
+  const double bending_length = std::sqrt(h * diameters.d0 / 2);
   if (k_tube > correction_max_stiffness ||  // stiffer than any fitted tube (in_training_envelope)
+      instrument.probe_radius_m > correction_max_probe_over_bending_length * bending_length ||
       !scaled(correction_log_groups(k_tube, diameters, h, instrument.probe_radius_m, correction), correction, z)) {
     result.status = SampleStatus::outside_correction;
     result.p = result.E = nan;

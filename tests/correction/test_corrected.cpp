@@ -102,6 +102,13 @@ TEST_CASE("outside the fitted range no value; the closed form's statuses pass th
   const TubeDiameters narrow = diameters_in_si(1.18 * 4e-6, 4e-6);
   CHECK(corrected_inverse(9.0, narrow, h, instrument, correction).status == SampleStatus::ok);
   CHECK(corrected_inverse(12.0, narrow, h, instrument, correction).status == SampleStatus::outside_correction);
+  // A probe wider than the bending length sqrt(h d0 / 2) = 0.69 um, though every group lies inside
+  // its range (rho/d0 0.17, h/d0 0.034): no training tube had one.
+  Instrument wide_probe = instrument;
+  wide_probe.probe_radius_m = 0.67e-6;
+  CHECK(corrected_inverse(k, middle, h, wide_probe, correction).status == SampleStatus::ok);
+  wide_probe.probe_radius_m = 0.71e-6;
+  CHECK(corrected_inverse(k, middle, h, wide_probe, correction).status == SampleStatus::outside_correction);
   Instrument big_probe = instrument;
   big_probe.probe_radius_m = 5e-6;
   const CorrectedInverse outside = corrected_inverse(k, middle, h, big_probe, correction);

@@ -120,6 +120,11 @@ inline bool held_out(const TrainingPoint& point, int fold = correction_folds - 1
 // tube's, and with them one held-out tube was 2.8 % off; corrected_inverse gives a tube above
 // this stiffness outside_correction whatever its groups.
 inline constexpr double correction_max_stiffness = 10.0;  // N/m
+// The widest probe of the training tubes with a value, in bending lengths sqrt(h d0 / 2) (turgid
+// h): 0.998. The design's wider probes all stayed below the force window's top, and a probe wider
+// than the bending length is where the finite-element mesh refines its contact (src/fe/README.md,
+// section 5): corrected_inverse gives such a tube outside_correction whatever its groups.
+inline constexpr double correction_max_probe_over_bending_length = 1.0;
 inline bool in_training_envelope(const TrainingPoint& point) { return point.ok && point.k <= correction_max_stiffness; }
 
 // Least-squares fit of both polynomials to the fitting rows (in the envelope and not in the
