@@ -29,7 +29,7 @@ double shell_fe_seconds_per_sample(ShellFeMesh mesh) {
     case ShellFeMesh::coarse: return 9.0;
     case ShellFeMesh::standard: return 55.0;
     case ShellFeMesh::fine: return 220.0;
-    case ShellFeMesh::finer: return 500.0;
+    case ShellFeMesh::finer: return 640.0;
   }
   return 55.0;
 }

@@ -22,9 +22,9 @@ namespace growthuq {
 // default 54 s per forward curve, the mean over the 245 training tubes of
 // src/correction/training.csv, plus the inflations, 55; fine four times that (src/fe/README.md,
 // "Speed": 575 s against 149 s at the test tube); finer, not measured over a campaign, fine's
-// time times 2.2 (the ratio of the two curves at the thick-wall point of
-// tools/bench/fe-mesh-convergence). A campaign's own tubes may differ by a factor of two either
-// way.
+// time times 2.9, the median ratio of the finer to the fine curve over the five points of
+// `tools/bench/fe-mesh-convergence --finer` (2.0 to 3.9). A campaign's own tubes may differ by a
+// factor of two either way.
 double shell_fe_seconds_per_sample(ShellFeMesh mesh);
 
 struct ShellFeTimeEstimate {

@@ -32,9 +32,10 @@ struct MeshSizing {
   int max_faces = 400000;  // refusing a mesh beyond this bounds time and memory
 };
 
-// The sizing of a level for a probe of radius rho and a wall of bending length
-// sqrt(h0 R) (R = 1/2): the finest size resolves the smaller of the two, the fine region
-// covers a few of the larger; each level is sqrt(2) finer than the one before it.
+// The sizing of a level for a probe of radius rho and a wall of bending length b = sqrt(h0 R)
+// (R = 1/2): the finest size resolves the smaller of the two over a fine region 2 rho wide; a
+// probe wider than b gets cells down to b/16 over a region b wide instead (mesh.cpp says why);
+// each level is sqrt(2) finer than the one before it.
 MeshSizing mesh_sizing(MeshLevel level, double probe_radius, double thickness);
 
 // The capped tube of unit diameter: a cylinder from the open distal ring in the plane z = 0 to

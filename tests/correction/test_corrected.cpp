@@ -103,7 +103,7 @@ TEST_CASE("outside the fitted range no value; the closed form's statuses pass th
   CHECK(corrected_inverse(9.0, narrow, h, instrument, correction).status == SampleStatus::ok);
   CHECK(corrected_inverse(12.0, narrow, h, instrument, correction).status == SampleStatus::outside_correction);
   // A probe wider than the bending length sqrt(h d0 / 2) = 0.69 um, though every group lies inside
-  // its range (rho/d0 0.17, h/d0 0.034): no training tube had one.
+  // its range (rho/d0 0.13, h/d0 0.034): no training tube had one.
   Instrument wide_probe = instrument;
   wide_probe.probe_radius_m = 0.67e-6;
   CHECK(corrected_inverse(k, middle, h, wide_probe, correction).status == SampleStatus::ok);
