@@ -156,6 +156,7 @@ void read_shell_fe_section(const IniDocument& document, const IniSection& sectio
   };
   read("law", options.law, parse_shell_fe_law);
   read("mesh", options.mesh, parse_shell_fe_mesh);
+  read("contact", options.contact, parse_shell_fe_contact);
   read("substrate", options.substrate, parse_shell_fe_switch);
   read("bending", options.bending, parse_shell_fe_switch);
   read("half_model", options.half_model, parse_shell_fe_switch);
@@ -169,7 +170,7 @@ void read_shell_fe_section(const IniDocument& document, const IniSection& sectio
     campaign.shell_fe_chunk_size = parse_count(chunk->value, reader.location(*chunk), chunk->key, 1, 10000);
   }
   reader.reject_unknown_keys(
-      "law, mesh, substrate, bending, half_model, tube_length_um, probe_distance_um, force_window_uN, chunk_size");
+      "law, mesh, contact, substrate, bending, half_model, tube_length_um, probe_distance_um, force_window_uN, chunk_size");
   options.validate(document.location(section.line));
 }
 

@@ -468,7 +468,7 @@ int run_eval(const Arguments& arguments) {
   }
   const Instrument parameters = instrument(options);
   if (options.fidelity == "closed_form") {
-    for (const char* flag : {"law", "geometry", "mesh-file", "mesh", "substrate", "bending", "half-model", "tube-length-um",
+    for (const char* flag : {"law", "geometry", "mesh-file", "mesh", "contact", "substrate", "bending", "half-model", "tube-length-um",
                              "probe-distance-um", "window-uN"}) {
       if (values.count(flag)) {
         throw InputError(std::string(command), "--" + std::string(flag) + " needs --fidelity shell_fe (or corrected)");

@@ -16,6 +16,8 @@ void ShellFeFlags::declare(po::options_description& options) {
                                            "of d0 (--geometry file only)")
       ("mesh", po::value(&mesh), "mesh density: coarse, default or fine (omitted: default; each level sqrt(2) finer "
                                  "than the one before); finer, one level more, for convergence checks")
+      ("contact", po::value(&contact), "contact of probe and substrate: active_set (default; exact, no penetration) or "
+                                       "penalty (the smooth penalty, for comparison)")
       ("substrate", po::value(&substrate), "rigid frictionless plane under the tube, opposite the probe: on (default) or off")
       ("bending", po::value(&bending), "Kirchhoff-Love bending: on (default) or off (membrane only)")
       ("half-model", po::value(&half_model), "mirror plane through the tube axis and the probe axis: on (default) or off")
@@ -48,6 +50,7 @@ ShellFeOptions ShellFeFlags::parse(std::string_view command) const {
     throw InputError(std::string(command), "--mesh-file needs --geometry file");
   }
   options.mesh = parse_shell_fe_mesh(mesh, command, "--mesh");
+  options.contact = parse_shell_fe_contact(contact, command, "--contact");
   // The [shell_fe] section's parsers and messages, by the flag's name.
   options.substrate = parse_shell_fe_switch(substrate, command, "--substrate");
   options.bending = parse_shell_fe_switch(bending, command, "--bending");
@@ -68,7 +71,7 @@ std::string describe(const ShellFeOptions& options) {
   } else if (options.geometry == ShellFeGeometry::file) {
     text << " (" << options.mesh_file << ")";
   }
-  text << ", mesh = " << to_string(options.mesh) << ", substrate " << (options.substrate ? "on" : "off") << ", bending "
+  text << ", mesh = " << to_string(options.mesh) << ", contact " << to_string(options.contact) << ", substrate " << (options.substrate ? "on" : "off") << ", bending "
        << (options.bending ? "on" : "off") << (options.half_model ? ", half model" : ", full model") << ", window "
        << format_micro(options.force_window[0]) << "-" << format_micro(options.force_window[1]) << " uN";
   return text.str();

@@ -16,6 +16,7 @@ struct ShellFeFlags {
   std::string geometry = "tube";
   std::string mesh_file;
   std::string mesh = "default";
+  std::string contact = "active_set";
   std::string substrate = "on";
   std::string bending = "on";
   std::string half_model = "on";

@@ -227,26 +227,23 @@ EnergyParts ShellAssembly::evaluate_impl(const Eigen::Matrix3Xd& x, Eigen::Vecto
     if (gradient) gradient->segment<3>(3 * load.node) -= load.force;
   }
   const auto contact_start = Clock::now();
-  if (!loads.spheres.empty() || !loads.planes.empty()) {
+  if (!loads.obstacles.empty() && loads.penalty.stiffness > 0) {
     Eigen::Vector3d g3;
     Eigen::Matrix3d h3;
     for (Eigen::Index v = 0; v < x.cols(); ++v) {
       const Eigen::Vector3d xv = x.col(v);
-      auto add = [&](double e) {
+      for (std::size_t o = 0; o < loads.obstacles.size(); ++o) {
+        const ObstacleGap gap = loads.obstacles.gap(o, xv);
+        if (gap.gap >= 0) continue;
+        if (o < loads.obstacles.spheres.size() && xv == loads.obstacles.spheres[o].centre) continue;
+        const double e = obstacle_contact(gap, loads.penalty, gradient ? &g3 : nullptr, values ? &h3 : nullptr);
         parts.contact += e;
-        if (e == 0.0) return;
         if (gradient) gradient->segment<3>(3 * v) += g3;
         if (values) {
           for (int j = 0; j < 3; ++j) {
             for (int i = j; i < 3; ++i) values[offset(static_cast<int>(v), static_cast<int>(v), 0, i, j)] += h3(i, j);
           }
         }
-      };
-      for (const RigidSphere& sphere : loads.spheres) {
-        add(sphere_contact(sphere, loads.penalty, xv, gradient ? &g3 : nullptr, values ? &h3 : nullptr));
-      }
-      for (const RigidPlane& plane : loads.planes) {
-        add(plane_contact(plane, loads.penalty, xv, gradient ? &g3 : nullptr, values ? &h3 : nullptr));
       }
     }
   }
@@ -264,19 +261,9 @@ EnergyParts ShellAssembly::evaluate_impl(const Eigen::Matrix3Xd& x, Eigen::Vecto
 }
 
 int ShellAssembly::limit_penetration(Eigen::Matrix3Xd& x, double cap) const {
-  const ShellLoads& loads = problem_.loads;
   int moved = 0;
   for (Eigen::Index v = 0; v < x.cols(); ++v) {
-    Eigen::Vector3d p = x.col(v);
-    for (const RigidSphere& sphere : loads.spheres) {
-      const Eigen::Vector3d r = p - sphere.centre;
-      const double distance = r.norm();
-      if (distance > 0 && sphere.radius - distance > cap) p = sphere.centre + r * ((sphere.radius - cap) / distance);
-    }
-    for (const RigidPlane& plane : loads.planes) {
-      const double penetration = -plane.normal.dot(p - plane.point);
-      if (penetration > cap) p += (penetration - cap) * plane.normal;
-    }
+    const Eigen::Vector3d p = problem_.loads.obstacles.limited(x.col(v), cap);
     if (p == x.col(v)) continue;
     ++moved;
     for (int k = 0; k < 3; ++k) {
@@ -289,15 +276,15 @@ int ShellAssembly::limit_penetration(Eigen::Matrix3Xd& x, double cap) const {
 ContactState ShellAssembly::contact_state(const Eigen::Matrix3Xd& x) const {
   const ShellLoads& loads = problem_.loads;
   ContactState state;
-  state.sphere_force.assign(loads.spheres.size(), Eigen::Vector3d::Zero());
-  state.plane_force.assign(loads.planes.size(), Eigen::Vector3d::Zero());
-  state.sphere_penetration.assign(loads.spheres.size(), 0.0);
-  state.sphere_contacts.assign(loads.spheres.size(), 0);
+  state.sphere_force.assign(loads.obstacles.spheres.size(), Eigen::Vector3d::Zero());
+  state.plane_force.assign(loads.obstacles.planes.size(), Eigen::Vector3d::Zero());
+  state.sphere_penetration.assign(loads.obstacles.spheres.size(), 0.0);
+  state.sphere_contacts.assign(loads.obstacles.spheres.size(), 0);
   Eigen::Vector3d g;
   for (Eigen::Index v = 0; v < x.cols(); ++v) {
-    for (std::size_t s = 0; s < loads.spheres.size(); ++s) {
+    for (std::size_t s = 0; s < loads.obstacles.spheres.size(); ++s) {
       double depth = 0.0;
-      if (sphere_contact(loads.spheres[s], loads.penalty, x.col(v), &g, nullptr, &depth) > 0 || depth > 0) {
+      if (sphere_contact(loads.obstacles.spheres[s], loads.penalty, x.col(v), &g, nullptr, &depth) > 0 || depth > 0) {
         // The node feels -g; the sphere feels the opposite.
         state.sphere_force[s] += g;
         if (depth > 0) ++state.sphere_contacts[s];
@@ -305,9 +292,9 @@ ContactState ShellAssembly::contact_state(const Eigen::Matrix3Xd& x) const {
         state.max_penetration = std::max(state.max_penetration, depth);
       }
     }
-    for (std::size_t p = 0; p < loads.planes.size(); ++p) {
+    for (std::size_t p = 0; p < loads.obstacles.planes.size(); ++p) {
       double depth = 0.0;
-      plane_contact(loads.planes[p], loads.penalty, x.col(v), &g, nullptr, &depth);
+      plane_contact(loads.obstacles.planes[p], loads.penalty, x.col(v), &g, nullptr, &depth);
       if (depth > 0) {
         state.plane_force[p] += g;
         state.max_penetration = std::max(state.max_penetration, depth);

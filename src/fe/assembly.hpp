@@ -1,6 +1,6 @@
 // The total potential energy of the wall under its loads, with its exact gradient and sparse
 // Hessian over all nodal dofs: membrane + bending + pressure (-p V) + contact penalty + point
-// loads. Fixed dofs (mirror nodes' y, the pinned ring, supports) are held where they are: their
+// loads (the contact penalty only when its stiffness is positive). Fixed dofs (mirror nodes' y, the pinned ring, supports) are held where they are: their
 // gradient entries are zero and their Hessian rows and columns those of the identity. The
 // sparsity pattern is built once; each evaluation refills its values.
 #pragma once
@@ -22,9 +22,10 @@ namespace growthuq::fe {
 struct ShellLoads {
   double pressure = 0.0;  // p/E, as the potential -p V
   std::vector<PointLoad> point_loads;
-  std::vector<RigidSphere> spheres;  // frictionless rigid obstacles
-  std::vector<RigidPlane> planes;
-  PenaltyLaw penalty;  // of every obstacle
+  Obstacles obstacles;  // frictionless rigid obstacles
+  // The penalty of every obstacle (contact.hpp). Stiffness 0: the obstacles add no energy, as
+  // under the active-set method, which holds them as constraints (active_set_contact.hpp).
+  PenaltyLaw penalty;
 };
 
 // A shell and its loads, all dimensionless (lengths / d0, stresses / E).
@@ -47,7 +48,7 @@ struct EnergyParts {
   double total() const { return membrane + bending + pressure + contact + point_loads; }
 };
 
-// What the obstacles feel at a state.
+// What the obstacles feel at a state under the penalty.
 struct ContactState {
   std::vector<Eigen::Vector3d> sphere_force;  // total force of the wall on each sphere
   std::vector<Eigen::Vector3d> plane_force;

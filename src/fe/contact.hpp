@@ -1,23 +1,15 @@
-// Frictionless contact of the wall's nodes with rigid obstacles (the probe, a sphere; the
-// substrate, a plane) by a smooth penalty on the penetration, and nodal point loads. The
-// penalty is dimensionless (force over E d0 per unit penetration over d0), so the solution
-// scales with E; the solver raises it until the deepest penetration is below its tolerance.
+// Frictionless contact of the wall's nodes with the rigid obstacles (obstacles.hpp) by a smooth
+// penalty on the penetration, kept beside the exact active-set method (active_set_contact.hpp) for
+// comparison, and nodal point loads. The penalty is dimensionless (force over E d0 per unit
+// penetration over d0), so the solution scales with E; the load stepping raises it until the
+// deepest penetration is below its tolerance.
 #pragma once
 
 #include <Eigen/Dense>
 
+#include "fe/obstacles.hpp"
+
 namespace growthuq::fe {
-
-struct RigidSphere {
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  double radius = 0.0;
-};
-
-// The half space normal . (x - point) >= 0 is free; the rest is the obstacle.
-struct RigidPlane {
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // unit
-};
 
 // Energy of a penetration s = -gap > 0: a cubic k s^3/(6 eps) up to s = eps, then the quadratic
 // k (s^2/2 - eps s/2 + eps^2/6), matched in value, slope and curvature (C2, so that Newton's
@@ -33,6 +25,9 @@ struct PenaltyValue {
 };
 PenaltyValue penalty(const PenaltyLaw&, double penetration);
 
+// Penalty energy of a node at gap g from an obstacle, with its gradient and Hessian with respect
+// to the node's position (nullptr = not wanted).
+double obstacle_contact(const ObstacleGap& g, const PenaltyLaw&, Eigen::Vector3d* gradient, Eigen::Matrix3d* hessian);
 // Penalty energy of a node at x against an obstacle, with its exact gradient and Hessian with
 // respect to x (nullptr = not wanted). `penetration_out`, if given, receives -gap.
 double sphere_contact(const RigidSphere&, const PenaltyLaw&, const Eigen::Vector3d& x,

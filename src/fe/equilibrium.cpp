@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace growthuq::fe {
 namespace {
@@ -17,35 +19,9 @@ std::string describe(NewtonStatus status) {
   return "unknown";
 }
 
-// The start of a step's Newton iterations: nodes that the obstacles' new positions put inside
-// them, or that lie within a thin band of their surfaces, are placed at a penetration of the
-// band's width (at least twice the penalty's smoothing) (radially for a sphere, along the normal for a plane). Otherwise the
-// first Newton steps would fight penalty forces of the whole step's motion, and a node just
-// touching (zero penetration, where the penalty's curvature vanishes) would be invisible to the
-// Newton model: a tube resting on the substrate would be free to swing through it.
-void project_out_of_obstacles(const ShellAssembly& assembly, double band, Eigen::Matrix3Xd& x) {
-  const ShellLoads& loads = assembly.loads();
-  const double margin = std::max(2 * loads.penalty.smoothing, band);
-  for (Eigen::Index v = 0; v < x.cols(); ++v) {
-    Eigen::Vector3d p = x.col(v);
-    for (const RigidSphere& sphere : loads.spheres) {
-      const Eigen::Vector3d r = p - sphere.centre;
-      const double distance = r.norm();
-      if (distance < sphere.radius + margin && distance > 0) p = sphere.centre + r * ((sphere.radius - margin) / distance);
-    }
-    for (const RigidPlane& plane : loads.planes) {
-      const double gap = plane.normal.dot(p - plane.point);
-      if (gap < margin) p -= (gap + margin) * plane.normal;
-    }
-    for (int k = 0; k < 3; ++k) {
-      if (!assembly.is_fixed(3 * v + k)) x(k, v) = p[k];
-    }
-  }
-}
-
 }  // namespace
 
-EquilibriumResult solve_equilibrium(ShellAssembly& assembly, NewtonSolver& solver, Eigen::Matrix3Xd& x,
+EquilibriumResult solve_equilibrium(ShellObjective& objective, NewtonSolver& solver, Eigen::Matrix3Xd& x,
                                     const std::function<void(double, ShellLoads&)>& set_loads,
                                     const LoadSteppingOptions& options,
                                     const std::function<bool(double, const Eigen::Matrix3Xd&)>& on_step) {
@@ -64,30 +40,27 @@ EquilibriumResult solve_equilibrium(ShellAssembly& assembly, NewtonSolver& solve
     }
     const double t_next = t + dt > 1.0 - 1e-9 ? 1.0 : t + dt;
     const double step = t_next - t;
-    set_loads(t_next, assembly.loads());
+    set_loads(t_next, objective.assembly().loads());
     trial = x;
     if (previous_dt > 0) trial += (step / previous_dt) * previous_move;  // linear predictor
-    project_out_of_obstacles(assembly, options.contact_band, trial);
+    objective.start_step(trial);
     NewtonReport report = solver.minimise(trial, options.newton);
     result.newton_iterations += report.iterations;
     bool converged = report.status == NewtonStatus::converged;
-    // Penalty control: raise the stiffness until the deepest penetration is within tolerance
-    // (penetration ~ force / stiffness, so the factor aims at half the tolerance).
-    for (int raise = 0; converged && options.penetration_tolerance > 0; ++raise) {
-      const double penetration = assembly.contact_state(trial).max_penetration;
-      if (penetration <= options.penetration_tolerance) break;
-      if (raise >= options.max_penalty_raises) {
+    for (int raise = 0; converged; ++raise) {
+      std::string failure;
+      if (objective.accept(trial, raise, failure)) break;
+      if (!failure.empty()) {
         converged = false;
-        last_failure = "penetration " + std::to_string(penetration) + " above tolerance after " +
-                       std::to_string(raise) + " penalty raises";
+        last_failure = failure;
         break;
       }
-      assembly.loads().penalty.stiffness *= std::max(2.0, 2.0 * penetration / options.penetration_tolerance);
       ++result.penalty_raises;
       report = solver.minimise(trial, options.newton);
       result.newton_iterations += report.iterations;
       converged = report.status == NewtonStatus::converged;
     }
+    if (std::getenv("GQDBG")) std::fprintf(stderr, "step t=%g dt=%g iters=%d status=%d\n", t_next, step, report.iterations, (int)report.status);
     if (!converged) {
       if (report.status != NewtonStatus::converged) last_failure = describe(report.status);
       ++result.cuts;

@@ -1,7 +1,8 @@
 // Load stepping to equilibrium along a one-parameter load path t in [0, 1]: each step is a
 // Newton minimisation from the previous state (with a linear predictor); a step that fails is
-// halved, a step that converges easily lets the next one grow; a contact penalty is raised until
-// the deepest penetration is below its tolerance. Bounded work: a status, never a hang.
+// halved, a step that converges easily lets the next one grow; the contact method may ask for a
+// converged step to be tightened and solved again (the penalty raised). Bounded work: a status,
+// never a hang.
 #pragma once
 
 #include <Eigen/Core>
@@ -9,8 +10,8 @@
 #include <functional>
 #include <string>
 
-#include "fe/assembly.hpp"
 #include "fe/newton.hpp"
+#include "fe/shell_objective.hpp"
 #include "fe/status.hpp"
 
 namespace growthuq::fe {
@@ -22,9 +23,6 @@ struct LoadSteppingOptions {
   int max_attempts = 200;    // converged steps plus failed ones
   int easy_iterations = 6;   // a step converged within these lets the next one grow 1.5 times
   NewtonOptions newton;
-  double penetration_tolerance = 0.0;  // absolute (/ d0); 0: the penalty is not controlled
-  int max_penalty_raises = 10;
-  double contact_band = 0.0;  // nodes closer than this to an obstacle start a step touching it
 };
 
 struct EquilibriumResult {
@@ -35,10 +33,10 @@ struct EquilibriumResult {
 };
 
 // `set_loads(t, loads)` sets the loads of parameter t (it must leave loads.penalty alone: the
-// stepping raises it). `on_step(t, x)`, if given, runs after each converged step; returning false
+// contact method raises it). `solver` minimises `objective`. `on_step(t, x)`, if given, runs after each converged step; returning false
 // stops the path there (status ok). x: the start state on entry (equilibrium at t = 0, fixed dofs
 // at their prescribed values), the last converged state on return.
-EquilibriumResult solve_equilibrium(ShellAssembly& assembly, NewtonSolver& solver, Eigen::Matrix3Xd& x,
+EquilibriumResult solve_equilibrium(ShellObjective& objective, NewtonSolver& solver, Eigen::Matrix3Xd& x,
                                     const std::function<void(double, ShellLoads&)>& set_loads,
                                     const LoadSteppingOptions& options = {},
                                     const std::function<bool(double, const Eigen::Matrix3Xd&)>& on_step = {});

@@ -206,10 +206,11 @@ void fill_fields(const Setup& s, const ShellAssembly& assembly, const Eigen::Mat
   }
 }
 
-void add_timing(const SolverTiming& part, SolverTiming& total) {
+void add_timing(const NewtonSolver& solver, const ShellObjective& objective, SolverTiming& total) {
+  const SolverTiming& part = solver.timing();
   total.assembly += part.assembly;
   total.factorisation += part.factorisation;
-  total.contact += part.contact;
+  total.contact += objective.contact_seconds();
   total.factorisations += part.factorisations;
 }
 
@@ -253,6 +254,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   }
   Setup setup;
   std::optional<ShellAssembly> assembly;
+  std::optional<ShellObjective> objective;
   std::unique_ptr<NewtonSolver> solver;
   Eigen::Matrix3Xd x;
   SolverTiming timing;
@@ -267,6 +269,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
       problem.fixed = setup.fixed;
       problem.loads.penalty = PenaltyLaw{1e3 * p.thickness, 0.0};
       solver.reset();
+      objective.reset();
       assembly.emplace(std::move(problem));
     } catch (const InputError& e) {
       if (p.geometry == Geometry::file) throw;  // an unreadable mesh file is the user's to fix
@@ -274,16 +277,27 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
       result.message = e.what();
       return result;
     }
-    solver = std::make_unique<NewtonSolver>(*assembly);
+    ContactOptions contact;
+    contact.method = p.contact;
+    // Active set: nodes within a thin band of an obstacle may be held on it. Penalty: nodes
+    // there start a step touching it; the penalty is raised until the deepest node is within
+    // the stated bound on any node's penetration; a Newton step may not carry a node deeper than
+    // half of it (the line search sees only the energy at the step's end).
+    contact.band = 0.1 * tolerance;
+    contact.reach = 0.25 * p.probe_radius;
+    contact.penetration_tolerance = tolerance;
+    contact.penetration_floor = 0.5 * tolerance;
+    objective.emplace(*assembly, contact);
+    solver = std::make_unique<NewtonSolver>(*objective);
     x = setup.mesh.positions;
     LoadSteppingOptions inflation;
     inflation.first_step = 0.25;
     inflation.max_step = 0.5;
     const EquilibriumResult inflated = solve_equilibrium(
-        *assembly, *solver, x, [&](double t, ShellLoads& loads) { loads.pressure = t * p.pressure; }, inflation);
+        *objective, *solver, x, [&](double t, ShellLoads& loads) { loads.pressure = t * p.pressure; }, inflation);
     result.newton_iterations += inflated.newton_iterations;
     if (inflated.status != FeStatus::ok) {
-      add_timing(solver->timing(), timing);
+      add_timing(*solver, *objective, timing);
       copy_timing(timing, result);
       // No equilibrium beyond the pressure maximum of the wall: the load steps shrink to nothing
       // while the diameter runs away.
@@ -295,7 +309,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
     const double actual = reference_distance(p, setup.mesh, x, p.probe_distance);
     if (std::fabs(actual - focus_distance) <= 0.5 * sizing.fine_radius) break;
     focus_distance = actual;
-    add_timing(solver->timing(), timing);  // the discarded pass
+    add_timing(*solver, *objective, timing);  // the discarded pass
   }
   if (p.geometry == Geometry::tube) {
     setup.probe_axis = Eigen::Vector3d(0, 0, x.row(2).maxCoeff() - p.probe_distance);
@@ -303,7 +317,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   measure_turgid(p, setup, *assembly, x, result);
   if (!indent) {
     fill_fields(setup, *assembly, x, result);
-    add_timing(solver->timing(), timing);
+    add_timing(*solver, *objective, timing);
     copy_timing(timing, result);
     return result;
   }
@@ -318,14 +332,14 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   if (!std::isfinite(touch)) {
     result.status = FeStatus::probe_beyond_mesh;
     result.message = "no node of the wall under the probe";
-    add_timing(solver->timing(), timing);
+    add_timing(*solver, *objective, timing);
     copy_timing(timing, result);
     return result;
   }
   const Eigen::Vector3d start(touch, setup.probe_axis.y(), setup.probe_axis.z());
-  assembly->loads().spheres = {RigidSphere{start, rho}};
+  assembly->loads().obstacles.spheres = {RigidSphere{start, rho}};
   if (setup.substrate) {
-    assembly->loads().planes = {RigidPlane{Eigen::Vector3d(x.row(0).minCoeff(), 0, 0), Eigen::Vector3d::UnitX()}};
+    assembly->loads().obstacles.planes = {RigidPlane{Eigen::Vector3d(x.row(0).minCoeff(), 0, 0), Eigen::Vector3d::UnitX()}};
   }
   const double mirror_factor = setup.half ? 2.0 : 1.0;
   result.depth = {0.0};
@@ -333,8 +347,8 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   result.contact_radius = {0.0};
   bool lost = false;
   auto record = [&](double t, const Eigen::Matrix3Xd& state) {
-    const RigidSphere& probe = assembly->loads().spheres.front();
-    const ContactState contact = assembly->contact_state(state);
+    const RigidSphere& probe = assembly->loads().obstacles.spheres.front();
+    const ContactState contact = objective->contact_state(state);
     double radius = 0.0;
     for (Eigen::Index v = 0; v < state.cols(); ++v) {
       if ((state.col(v) - probe.centre).norm() < probe.radius) {
@@ -355,24 +369,22 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   LoadSteppingOptions indentation;
   indentation.first_step = 1.0 / 48;  // the contact forms gently, then the steps grow
   indentation.max_step = 1.0 / 8;
-  indentation.penetration_tolerance = tolerance;
-  indentation.contact_band = 0.1 * tolerance;
   // A Newton step may not carry a node across the probe: the line search sees only the energy
   // at the step's end, where a wall that has jumped past the probe has none left in contact.
   indentation.newton.max_step = 0.25 * rho;
-  indentation.newton.penetration_floor = 0.5 * tolerance;
   // The nodal residual that is left, 1e-6 of E h0 times the shortest edge, is below 1e-5 of the
   // smallest recorded force; the contact's active set makes the last digits linear to reach.
   indentation.newton.gradient_tolerance = 1e-6;
   EquilibriumResult indented{};
   if (p.max_depth > 0) {
     indented = solve_equilibrium(
-        *assembly, *solver, x,
-        [&](double t, ShellLoads& loads) { loads.spheres.front().centre = start - Eigen::Vector3d(t * p.max_depth, 0, 0); },
+        *objective, *solver, x,
+        [&](double t, ShellLoads& loads) { loads.obstacles.spheres.front().centre = start - Eigen::Vector3d(t * p.max_depth, 0, 0); },
         indentation, record);
   }
   result.newton_iterations += indented.newton_iterations;
-  add_timing(solver->timing(), timing);
+  result.load_steps = indented.steps;
+  add_timing(*solver, *objective, timing);
   copy_timing(timing, result);
   fill_fields(setup, *assembly, x, result);
   if (lost) {

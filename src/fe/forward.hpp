@@ -13,6 +13,7 @@
 #include "fe/material_law.hpp"
 #include "fe/membrane.hpp"
 #include "fe/mesh.hpp"
+#include "fe/shell_objective.hpp"
 #include "fe/status.hpp"
 
 namespace growthuq::fe {
@@ -34,6 +35,7 @@ struct ForwardProblem {            // all dimensionless
   bool bending = true;
   bool half_model = true;
   MeshLevel mesh = MeshLevel::standard;
+  ContactMethod contact = ContactMethod::active_set;
 };
 
 // The deepest indentation (/ d0) that indent() and the inverse ask for when they choose the depth
@@ -51,6 +53,7 @@ struct ForwardResult {
   double axial_stretch = 0.0;      // tube only
   double thickness_stretch = 0.0;  // h/h0 there
   double max_penetration = 0.0;    // deepest node in the probe or substrate over the path, / d0
+  int load_steps = 0;              // converged indentation steps
   int newton_iterations = 0;
   double seconds_assembly = 0, seconds_factorisation = 0, seconds_contact = 0;
   int factorisations = 0;          // sparse Cholesky factorisations (shifted retries included)

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace growthuq::fe {
 namespace {
@@ -18,16 +20,15 @@ double seconds_since(Clock::time_point start) {
 }  // namespace
 
 // CHOLMOD's simplicial LL^T (faster than its supernodal one with Debian's reference BLAS at
-// these sizes: 18 against 34 ms for 1311 dofs, 76 against 127 ms for 2703, on a loaded machine) of the lower triangle; the symbolic analysis (fill-reducing
-// ordering, supernodes) is done once for the assembly's pattern.
+// these sizes: 18 against 34 ms for 1311 dofs, 76 against 127 ms for 2703, on a loaded machine)
+// of the lower triangle; the symbolic analysis (fill-reducing ordering) is done once.
 struct NewtonSolver::Factor {
   Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
 };
 
-NewtonSolver::NewtonSolver(const ShellAssembly& assembly)
-    : assembly_(assembly), factor_(std::make_unique<Factor>()) {
+NewtonSolver::NewtonSolver(NewtonProblem& problem) : problem_(problem), factor_(std::make_unique<Factor>()) {
   factor_->llt.cholmod().print = 0;  // a failed factorisation is expected (indefinite), not an error
-  hessian_ = assembly_.pattern();
+  hessian_ = problem_.pattern();
   factor_->llt.analyzePattern(hessian_);
 }
 
@@ -35,22 +36,22 @@ NewtonSolver::~NewtonSolver() = default;
 
 NewtonReport NewtonSolver::minimise(Eigen::Matrix3Xd& x, const NewtonOptions& options) {
   NewtonReport report;
-  const Eigen::Index n = assembly_.dofs();
-  Eigen::VectorXd gradient(n), step(n);
+  const Eigen::Index n = 3 * problem_.nodes();
+  Eigen::VectorXd gradient(n), step(n), move(n);
   Eigen::Matrix3Xd trial(3, x.cols());
-  const double scale = assembly_.force_scale();
   for (int iteration = 0;; ++iteration) {
     auto start = Clock::now();
-    const EnergyParts parts = assembly_.evaluate(x, gradient, &hessian_, &timing_.contact);
+    double stationarity = 0.0;
+    const EnergyValue here = problem_.linearise(x, gradient, hessian_, stationarity);
     timing_.assembly += seconds_since(start);
-    report.energy = parts.total();
-    report.gradient_norm = gradient.lpNorm<Eigen::Infinity>() / scale;
-    report.gradient_history.push_back(report.gradient_norm);
-    if (!std::isfinite(report.energy) || !std::isfinite(report.gradient_norm)) {
+    report.energy = here.value;
+    report.gradient_norm = stationarity;
+    report.gradient_history.push_back(stationarity);
+    if (!std::isfinite(here.value) || !std::isfinite(stationarity)) {
       report.status = NewtonStatus::not_finite;
       return report;
     }
-    if (report.gradient_norm <= options.gradient_tolerance) {
+    if (stationarity <= options.gradient_tolerance) {
       report.status = NewtonStatus::converged;
       return report;
     }
@@ -58,14 +59,13 @@ NewtonReport NewtonSolver::minimise(Eigen::Matrix3Xd& x, const NewtonOptions& op
       report.status = NewtonStatus::max_iterations;
       return report;
     }
-    // Factorise H + shift I, the shift grown tenfold from a small fraction of the mean
-    // diagonal until the factorisation succeeds (Nocedal and Wright 2006, algorithm 3.3).
+    // Factorise H + shift I: the unshifted system first (Newton's quadratic convergence where it
+    // is positive definite), then a shift from a quarter of the last one that worked, grown
+    // tenfold (Nocedal and Wright 2006, algorithm 3.3).
     start = Clock::now();
     double mean_diagonal = 0.0;
     for (Eigen::Index c = 0; c < n; ++c) mean_diagonal += std::fabs(hessian_.coeff(c, c));
     mean_diagonal = std::max(mean_diagonal / static_cast<double>(n), 1e-300);
-    // The unshifted Hessian first (Newton's quadratic convergence where it is positive
-    // definite); then a shift from a quarter of the last one that worked, grown tenfold.
     double shift = 0.0;
     bool factorised = false;
     for (int attempt = 0; attempt <= options.max_shifts; ++attempt) {
@@ -87,30 +87,28 @@ NewtonReport NewtonSolver::minimise(Eigen::Matrix3Xd& x, const NewtonOptions& op
     last_shift_ = shift;
     step = -factor_->llt.solve(gradient);
     timing_.factorisation += seconds_since(start);
+    problem_.to_nodal(step);
     if (!step.allFinite()) {
       report.status = NewtonStatus::not_finite;
       return report;
     }
     const double largest = step.lpNorm<Eigen::Infinity>();
     if (largest > options.max_step) step *= options.max_step / largest;
-    const double slope = gradient.dot(step);
-    // Backtracking on the energy; energy changes below its round-off are accepted as no
-    // change (near the minimum the decrease is below what double precision resolves).
-    const double noise = 1e-13 * (std::fabs(parts.membrane) + std::fabs(parts.bending) +
-                                  std::fabs(parts.pressure) + std::fabs(parts.contact) +
-                                  std::fabs(parts.point_loads)) + 1e-300;
+    // Backtracking along the projected path x(alpha) = P(x + alpha step) with the sufficient
+    // decrease measured on the move actually made (Bertsekas 1982); energy changes below the
+    // round-off of its terms count as no change (near the minimum double precision cannot
+    // resolve the decrease).
+    const double noise = 1e-13 * here.magnitude + 1e-300;
     double alpha = 1.0;
     bool accepted = false;
     start = Clock::now();
-    const double cap = options.penetration_floor > 0
-                           ? std::max(options.penetration_floor, 1.5 * assembly_.contact_state(x).max_penetration)
-                           : 0.0;
     for (int k = 0; k < options.max_line_search; ++k) {
       trial = x + alpha * Eigen::Map<const Eigen::Matrix3Xd>(step.data(), 3, x.cols());
-      if (cap > 0) assembly_.limit_penetration(trial, cap);
-      const double energy = assembly_.energy(trial).total();
-      if (std::isfinite(energy) && (energy <= report.energy + 1e-4 * alpha * slope ||
-                                    std::fabs(energy - report.energy) <= noise)) {
+      problem_.make_admissible(trial);
+      move = Eigen::Map<const Eigen::VectorXd>(trial.data(), n) - Eigen::Map<const Eigen::VectorXd>(x.data(), n);
+      const double energy = problem_.energy(trial).value;
+      if (std::isfinite(energy) && (energy <= here.value + 1e-4 * std::min(0.0, problem_.slope(move)) ||
+                                    std::fabs(energy - here.value) <= noise)) {
         accepted = true;
         break;
       }
@@ -121,6 +119,7 @@ NewtonReport NewtonSolver::minimise(Eigen::Matrix3Xd& x, const NewtonOptions& op
       report.status = NewtonStatus::line_search_failed;
       return report;
     }
+    if (std::getenv("GQDBG")) std::fprintf(stderr, "  it %d stat %.3e shift %.1e alpha %.3g\n", iteration, stationarity, shift, alpha);
     x = trial;
     report.iterations = iteration + 1;
   }

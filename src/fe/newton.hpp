@@ -1,34 +1,53 @@
-// Newton's method for the minimum of the total potential energy: a sparse Cholesky
-// factorisation (CHOLMOD, simplicial LL^T, its symbolic analysis done once for the assembly's fixed
-// pattern), an indefinite Hessian regularised by a diagonal shift grown until it factorises,
-// and a backtracking line search on the energy (Armijo). Converged when the largest gradient
-// entry is below a tolerance relative to the wall's nodal force scale.
+// Newton's method for the minimum of an energy over nodal positions, free of physics: the
+// problem (NewtonProblem) gives the energy, the Newton system of a step in its own coordinates
+// (constraints applied there), the nodal move of a solution and a step-feasibility projection.
+// The solver factorises the system with a sparse Cholesky (CHOLMOD, simplicial LL^T, its
+// symbolic analysis done once for the problem's fixed pattern), regularises an indefinite
+// system by a diagonal shift grown until it factorises, and globalises by a backtracking
+// (Armijo) search along the projected path (Bertsekas 1982, projected Newton).
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include <memory>
 #include <vector>
 
-#include "fe/assembly.hpp"
-
 namespace growthuq::fe {
+
+// An energy and the size of its terms (the round-off below which two energies are equal).
+struct EnergyValue {
+  double value = 0.0;
+  double magnitude = 0.0;  // sum of the terms' absolute values
+};
+
+// What Newton needs of a problem. Positions are 3 x nodes; dofs are node-major (x, y, z).
+class NewtonProblem {
+ public:
+  virtual ~NewtonProblem() = default;
+  virtual Eigen::Index nodes() const = 0;
+  // The system's sparsity (lower triangle); every linearise() fills exactly this pattern.
+  virtual const Eigen::SparseMatrix<double>& pattern() const = 0;
+  // At an admissible x: the energy, and (gradient, hessian) of the step's system H u = -g in the
+  // problem's coordinates (u need not be the nodal move: see to_nodal). Also returns in
+  // `stationarity` the largest entry of the constrained gradient (zero at a solution).
+  virtual EnergyValue linearise(const Eigen::Matrix3Xd& x, Eigen::VectorXd& gradient,
+                                Eigen::SparseMatrix<double>& hessian, double& stationarity) = 0;
+  virtual EnergyValue energy(const Eigen::Matrix3Xd& x) const = 0;
+  // The nodal move of a system's solution, in place (the identity by default).
+  virtual void to_nodal(Eigen::VectorXd& /*step*/) const {}
+  // The first-order change of the energy for a nodal move from the last linearised x.
+  virtual double slope(const Eigen::VectorXd& move) const = 0;
+  // A trial point moved into the admissible set, in place (nothing by default).
+  virtual void make_admissible(Eigen::Matrix3Xd& /*trial*/) const {}
+};
 
 struct NewtonOptions {
   int max_iterations = 40;
-  double gradient_tolerance = 1e-8;  // max |gradient| / force_scale
-  double max_step = 0.25;            // largest nodal move of one iteration, / d0
+  double gradient_tolerance = 1e-8;  // largest entry of the constrained gradient, as the problem measures it
+  double max_step = 0.25;            // largest nodal move of one iteration
   int max_line_search = 40;
   int max_shifts = 30;
-  // Contact-aware line search (0: off). Newton's model does not see an obstacle that a node has
-  // not touched yet, so its step can carry the node deep inside, and a plain backtracking line
-  // search then cuts the whole step to almost nothing (the indentation's iterations were spent
-  // so, at 1e-3 of a step each). With a floor > 0, every trial point has its nodes moved back
-  // out of the obstacles to a penetration of at most max(floor, 1.5 times the deepest
-  // penetration of the current iterate) (a projection onto that set, ShellAssembly::
-  // limit_penetration) before its energy is compared; at a converged state with penetrations
-  // below the floor the projection does nothing, so the minimiser is unchanged.
-  double penetration_floor = 0.0;
 };
 
 enum class NewtonStatus { converged, max_iterations, line_search_failed, factorisation_failed, not_finite };
@@ -38,7 +57,7 @@ struct NewtonReport {
   int iterations = 0;           // factorisations with a step taken
   int shifted = 0;              // iterations that needed a diagonal shift
   double energy = 0.0;
-  double gradient_norm = 0.0;   // max |gradient| / force_scale at the end
+  double gradient_norm = 0.0;   // stationarity at the end
   std::vector<double> gradient_history;  // the same at the start of each iteration
 };
 
@@ -50,18 +69,19 @@ struct SolverTiming {
 
 class NewtonSolver {
  public:
-  explicit NewtonSolver(const ShellAssembly& assembly);
+  explicit NewtonSolver(NewtonProblem& problem);
   ~NewtonSolver();
   NewtonSolver(const NewtonSolver&) = delete;
   NewtonSolver& operator=(const NewtonSolver&) = delete;
 
-  // Minimises from x (node positions; fixed dofs keep their values) in place.
+  // Minimises from x (admissible) in place.
   NewtonReport minimise(Eigen::Matrix3Xd& x, const NewtonOptions& options = {});
   const SolverTiming& timing() const { return timing_; }
+  SolverTiming& timing() { return timing_; }
 
  private:
   struct Factor;
-  const ShellAssembly& assembly_;
+  NewtonProblem& problem_;
   std::unique_ptr<Factor> factor_;
   Eigen::SparseMatrix<double> hessian_;
   SolverTiming timing_;

@@ -40,6 +40,16 @@ std::string_view to_string(ShellFeMesh mesh) {
   return "?";
 }
 
+std::string_view to_string(ShellFeContact contact) {
+  return contact == ShellFeContact::active_set ? "active_set" : "penalty";
+}
+
+ShellFeContact parse_shell_fe_contact(std::string_view text, std::string_view location, std::string_view key) {
+  if (text == "active_set") return ShellFeContact::active_set;
+  if (text == "penalty") return ShellFeContact::penalty;
+  throw_bad_value(location, key, text, "active_set (exact contact) or penalty (the smooth penalty, for comparison)");
+}
+
 ShellFeLaw parse_shell_fe_law(std::string_view text, std::string_view location, std::string_view key) {
   if (text == "log") return ShellFeLaw::hencky;
   if (text == "stvk") return ShellFeLaw::saint_venant_kirchhoff;

@@ -25,6 +25,7 @@ ForwardProblem make_problem(const ShellFeOptions& options, double plasmolysed_di
   problem.substrate = options.substrate;
   problem.bending = options.bending;
   problem.half_model = options.half_model;
+  problem.contact = options.contact;
   switch (options.mesh) {
     case ShellFeMesh::coarse: problem.mesh = MeshLevel::coarse; break;
     case ShellFeMesh::standard: problem.mesh = MeshLevel::standard; break;

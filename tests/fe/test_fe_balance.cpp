@@ -15,6 +15,7 @@
 #include "fe/forward.hpp"
 #include "fe/mesh.hpp"
 #include "fe/newton.hpp"
+#include "fe/shell_objective.hpp"
 #include "fe_validation_support.hpp"
 
 using namespace growthuq;
@@ -48,11 +49,12 @@ TEST_CASE("the indented tube balances its forces and its probe force is the ener
   // A fixed penalty (not raised between the solves, so that the energy is one function).
   problem.loads.penalty = fe::PenaltyLaw{1e3 * thickness, 0.0};
   fe::ShellAssembly assembly(problem);
-  fe::NewtonSolver solver(assembly);
+  fe::ShellObjective objective(assembly, {.method = fe::ContactMethod::penalty});
+  fe::NewtonSolver solver(objective);
   tube.x = problem.mesh.positions;
   fe::LoadSteppingOptions inflation;
   const fe::EquilibriumResult inflated = fe::solve_equilibrium(
-      assembly, solver, tube.x, [](double t, fe::ShellLoads& loads) { loads.pressure = t * pressure; }, inflation);
+      objective, solver, tube.x, [](double t, fe::ShellLoads& loads) { loads.pressure = t * pressure; }, inflation);
   REQUIRE(inflated.status == fe::FeStatus::ok);
 
   // Probe over the node nearest the probe axis, substrate touching the lowest node.
@@ -64,8 +66,8 @@ TEST_CASE("the indented tube balances its forces and its probe force is the ener
   }
   REQUIRE(touch > 0);
   tube.probe_start = Eigen::Vector3d(touch, 0, probe_z);
-  assembly.loads().spheres = {fe::RigidSphere{tube.probe_start, rho}};
-  assembly.loads().planes = {fe::RigidPlane{Eigen::Vector3d(tube.x.row(0).minCoeff(), 0, 0), Eigen::Vector3d::UnitX()}};
+  assembly.loads().obstacles.spheres = {fe::RigidSphere{tube.probe_start, rho}};
+  assembly.loads().obstacles.planes = {fe::RigidPlane{Eigen::Vector3d(tube.x.row(0).minCoeff(), 0, 0), Eigen::Vector3d::UnitX()}};
   const double depth = 0.05;
   fe::LoadSteppingOptions indentation;
   indentation.first_step = 0.25;
@@ -73,8 +75,8 @@ TEST_CASE("the indented tube balances its forces and its probe force is the ener
   indentation.newton.max_step = 0.25 * rho;
   const Eigen::Vector3d start = tube.probe_start;
   const fe::EquilibriumResult indented = fe::solve_equilibrium(
-      assembly, solver, tube.x,
-      [&](double t, fe::ShellLoads& loads) { loads.spheres.front().centre = start - Eigen::Vector3d(t * depth, 0, 0); },
+      objective, solver, tube.x,
+      [&](double t, fe::ShellLoads& loads) { loads.obstacles.spheres.front().centre = start - Eigen::Vector3d(t * depth, 0, 0); },
       indentation);
   REQUIRE(indented.status == fe::FeStatus::ok);
 
@@ -116,7 +118,7 @@ TEST_CASE("the indented tube balances its forces and its probe force is the ener
     fe::NewtonOptions options;
     options.max_step = 0.25 * rho;
     auto energy_at = [&](double d) {
-      assembly.loads().spheres.front().centre = start - Eigen::Vector3d(d, 0, 0);
+      assembly.loads().obstacles.spheres.front().centre = start - Eigen::Vector3d(d, 0, 0);
       Eigen::Matrix3Xd y = tube.x;
       const fe::NewtonReport report = solver.minimise(y, options);
       REQUIRE(report.status == fe::NewtonStatus::converged);

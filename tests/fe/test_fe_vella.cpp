@@ -36,6 +36,7 @@
 #include "fe/assembly.hpp"
 #include "fe/mesh.hpp"
 #include "fe/newton.hpp"
+#include "fe/shell_objective.hpp"
 #include "vella_stiffness.hpp"
 
 using namespace growthuq;
@@ -118,7 +119,8 @@ VellaMeasurement measure(double target_tau, double finest_over_length) {
   problem.loads.penalty.smoothing = 0.0;
 
   fe::ShellAssembly assembly(problem);
-  fe::NewtonSolver solver(assembly);
+  fe::ShellObjective objective(assembly, {.method = fe::ContactMethod::penalty});
+  fe::NewtonSolver solver(objective);
   fe::NewtonOptions options;
   options.max_iterations = 60;
 
@@ -131,7 +133,7 @@ VellaMeasurement measure(double target_tau, double finest_over_length) {
 
   const double probe_radius = 0.1 * smallest;
   auto indent = [&](double depth, double& force, double& deflection) {
-    assembly.loads().spheres = {fe::RigidSphere{Eigen::Vector3d(pole_inflated + probe_radius - depth, 0, 0), probe_radius}};
+    assembly.loads().obstacles.spheres = {fe::RigidSphere{Eigen::Vector3d(pole_inflated + probe_radius - depth, 0, 0), probe_radius}};
     Eigen::Matrix3Xd y = x;
     const fe::NewtonReport r = solver.minimise(y, options);
     if (r.status != fe::NewtonStatus::converged) return false;

@@ -11,6 +11,7 @@
 #include "fe/far_field.hpp"
 #include "fe/forward.hpp"
 #include "fe/newton.hpp"
+#include "fe/shell_objective.hpp"
 
 using namespace growthuq::fe;
 
@@ -29,8 +30,8 @@ ShellProblem small_problem(MaterialLaw law) {
   problem.mirror_y0 = true;
   problem.fixed = mirror_and_end_ring_fixed(problem.mesh, true, false);
   problem.loads.pressure = 0.01;
-  problem.loads.spheres = {RigidSphere{Eigen::Vector3d(0.62, 0.0, 0.0), 0.15}};
-  problem.loads.planes = {RigidPlane{Eigen::Vector3d(-0.49, 0, 0), Eigen::Vector3d::UnitX()}};
+  problem.loads.obstacles.spheres = {RigidSphere{Eigen::Vector3d(0.62, 0.0, 0.0), 0.15}};
+  problem.loads.obstacles.planes = {RigidPlane{Eigen::Vector3d(-0.49, 0, 0), Eigen::Vector3d::UnitX()}};
   problem.loads.penalty = PenaltyLaw{50.0, 0.01};
   problem.loads.point_loads = {PointLoad{3, Eigen::Vector3d(0.001, 0.0, -0.002)}};
   return problem;
@@ -92,7 +93,8 @@ TEST_CASE("Newton converges quadratically on the inflation of a capped tube") {
   problem.mirror_y0 = true;
   problem.fixed = mirror_and_end_ring_fixed(problem.mesh, true, true);
   ShellAssembly assembly(problem);
-  NewtonSolver solver(assembly);
+  ShellObjective objective(assembly);
+  NewtonSolver solver(objective);
   Eigen::Matrix3Xd x = problem.mesh.positions;
   // First to p/E = 0.002, then one Newton solve of a 20 % pressure increment: smooth, convex
   // near the solution, so the gradient's norm should square from one iteration to the next.
@@ -185,8 +187,8 @@ TEST_CASE("limit_penetration puts nodes deeper than the cap back at the cap, fix
   problem.bending = false;
   problem.fixed.assign(12, 0);
   problem.fixed[3 * 2 + 1] = 1;  // node 2 held in y
-  problem.loads.spheres = {RigidSphere{Eigen::Vector3d(0, 0, 1), 0.5}};
-  problem.loads.planes = {RigidPlane{Eigen::Vector3d(0, 0, -1), Eigen::Vector3d::UnitZ()}};
+  problem.loads.obstacles.spheres = {RigidSphere{Eigen::Vector3d(0, 0, 1), 0.5}};
+  problem.loads.obstacles.planes = {RigidPlane{Eigen::Vector3d(0, 0, -1), Eigen::Vector3d::UnitZ()}};
   const ShellAssembly assembly(problem);
   Eigen::Matrix3Xd x(3, 4);
   x.col(0) = Eigen::Vector3d(0.0, 0.0, 0.7);     // 0.3 inside the sphere

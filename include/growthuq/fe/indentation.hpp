@@ -24,6 +24,10 @@ enum class ShellFeLaw {
 };
 enum class ShellFeGeometry { tube, sphere, file };
 enum class ShellFeMesh { coarse, standard, fine, finer };  // "coarse" | "default" | "fine" | "finer"
+// How the probe and the substrate are kept out of the wall (src/fe/README.md, section 4):
+// exact frictionless contact by an active set (default: no penetration, no parameter), or the
+// smooth penalty it replaced, kept for comparison.
+enum class ShellFeContact { active_set, penalty };  // "active_set" | "penalty"
 
 // The model's options: the same struct is a campaign's [shell_fe] section (keys as named in
 // validate()'s messages). All lengths in m, forces in N.
@@ -37,6 +41,7 @@ struct ShellFeOptions {
   bool bending = true;                  // Kirchhoff-Love bending on (off: membrane only)
   bool half_model = true;               // mirror plane through the tube axis and the probe axis
   ShellFeMesh mesh = ShellFeMesh::standard;
+  ShellFeContact contact = ShellFeContact::active_set;
   std::array<double, 2> force_window{0.4e-6, 4e-6};  // k is fitted over F in this window, N
   // Inverse: refine the far-field inflation with finite-element inflation of the mesh when the
   // turgid diameters differ by more than this (relative); 0 always refines, inf never.
@@ -51,12 +56,14 @@ struct ShellFeOptions {
 std::string_view to_string(ShellFeLaw);       // "log", "stvk"
 std::string_view to_string(ShellFeGeometry);  // "tube", "sphere", "file"
 std::string_view to_string(ShellFeMesh);      // "coarse", "default", "fine", "finer"
+std::string_view to_string(ShellFeContact);   // "active_set", "penalty"
 // The option's value from its text as typed (a campaign's [shell_fe] value or a command's flag,
 // one parser and one message for both); InputError("<location>", "<key> = '<text>': expected
 // ...") otherwise.
 ShellFeLaw parse_shell_fe_law(std::string_view text, std::string_view location, std::string_view key);
 ShellFeGeometry parse_shell_fe_geometry(std::string_view text, std::string_view location, std::string_view key);
 ShellFeMesh parse_shell_fe_mesh(std::string_view text, std::string_view location, std::string_view key);
+ShellFeContact parse_shell_fe_contact(std::string_view text, std::string_view location, std::string_view key);
 bool parse_shell_fe_switch(std::string_view text, std::string_view location, std::string_view key);  // on | off
 // um in [5, 1e6] -> m.
 double parse_shell_fe_tube_length(std::string_view text, std::string_view location, std::string_view key);

@@ -1,0 +1,121 @@
+#include "fe/shell_objective.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace growthuq::fe {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double magnitude(const EnergyParts& parts) {
+  return std::fabs(parts.membrane) + std::fabs(parts.bending) + std::fabs(parts.pressure) +
+         std::fabs(parts.contact) + std::fabs(parts.point_loads);
+}
+
+}  // namespace
+
+ShellObjective::ShellObjective(ShellAssembly& assembly, ContactOptions options)
+    : assembly_(assembly), options_(options), active_set_(assembly.problem().fixed, options.band, options.reach) {
+  if (options_.method == ContactMethod::active_set) assembly_.loads().penalty.stiffness = 0.0;
+}
+
+EnergyValue ShellObjective::linearise(const Eigen::Matrix3Xd& x, Eigen::VectorXd& gradient,
+                                      Eigen::SparseMatrix<double>& hessian, double& stationarity) {
+  const EnergyParts parts = assembly_.evaluate(x, gradient_, &hessian, &contact_seconds_);
+  gradient = gradient_;
+  const double scale = assembly_.force_scale();
+  const Obstacles& obstacles = assembly_.loads().obstacles;
+  if (options_.method == ContactMethod::active_set) {
+    const auto start = Clock::now();
+    stationarity = active_set_.select(obstacles, x, gradient, &hessian) / scale;
+    active_set_.reduce(hessian, gradient);
+    contact_seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
+  } else {
+    stationarity = gradient.lpNorm<Eigen::Infinity>() / scale;
+    cap_ = options_.penetration_floor > 0
+               ? std::max(options_.penetration_floor, 1.5 * assembly_.contact_state(x).max_penetration)
+               : 0.0;
+  }
+  return {parts.total(), magnitude(parts)};
+}
+
+EnergyValue ShellObjective::energy(const Eigen::Matrix3Xd& x) const {
+  const EnergyParts parts = assembly_.energy(x);
+  return {parts.total(), magnitude(parts)};
+}
+
+void ShellObjective::to_nodal(Eigen::VectorXd& step) const {
+  if (options_.method == ContactMethod::active_set) active_set_.to_nodal(step);
+}
+
+void ShellObjective::make_admissible(Eigen::Matrix3Xd& trial) const {
+  if (options_.method == ContactMethod::active_set) {
+    active_set_.settle(assembly_.loads().obstacles, trial);
+  } else if (cap_ > 0) {
+    assembly_.limit_penetration(trial, cap_);
+  }
+}
+
+void ShellObjective::start_step(Eigen::Matrix3Xd& x) const {
+  const Obstacles& obstacles = assembly_.loads().obstacles;
+  if (options_.method == ContactMethod::active_set) {
+    ActiveSetContact::project(obstacles, assembly_.problem().fixed, x);
+    return;
+  }
+  // Penalty: otherwise the first Newton steps would fight penalty forces of the whole step's
+  // motion, and a node just touching (zero penetration, where the penalty's curvature vanishes)
+  // would be invisible to the Newton model: a tube resting on the substrate would be free to
+  // swing through it.
+  const double margin = std::max(2 * assembly_.loads().penalty.smoothing, options_.band);
+  for (Eigen::Index v = 0; v < x.cols(); ++v) {
+    Eigen::Vector3d p = x.col(v);
+    for (std::size_t o = 0; o < obstacles.size(); ++o) {
+      const ObstacleGap g = obstacles.gap(o, p);
+      if (g.gap < margin && (o >= obstacles.spheres.size() || p != obstacles.spheres[o].centre)) {
+        p -= (g.gap + margin) * g.normal;
+      }
+    }
+    for (int k = 0; k < 3; ++k) {
+      if (!assembly_.is_fixed(3 * v + k)) x(k, v) = p[k];
+    }
+  }
+}
+
+bool ShellObjective::accept(const Eigen::Matrix3Xd& x, int raises, std::string& failure) {
+  if (options_.method == ContactMethod::active_set || options_.penetration_tolerance <= 0) return true;
+  const double penetration = assembly_.contact_state(x).max_penetration;
+  if (penetration <= options_.penetration_tolerance) return true;
+  if (raises >= options_.max_penalty_raises) {
+    failure = "penetration " + std::to_string(penetration) + " above tolerance after " + std::to_string(raises) +
+              " penalty raises";
+    return false;
+  }
+  // penetration ~ force / stiffness, so the factor aims at half the tolerance.
+  assembly_.loads().penalty.stiffness *= std::max(2.0, 2.0 * penetration / options_.penetration_tolerance);
+  return false;
+}
+
+ContactState ShellObjective::contact_state(const Eigen::Matrix3Xd& x) {
+  if (options_.method == ContactMethod::penalty) return assembly_.contact_state(x);
+  const Obstacles& obstacles = assembly_.loads().obstacles;
+  assembly_.evaluate(x, gradient_, nullptr);
+  active_set_.select(obstacles, x, gradient_);
+  const ContactReaction reaction = active_set_.reaction(obstacles, x);
+  ContactState state;
+  const std::size_t spheres = obstacles.spheres.size();
+  state.sphere_force.assign(reaction.force.begin(), reaction.force.begin() + static_cast<std::ptrdiff_t>(spheres));
+  state.plane_force.assign(reaction.force.begin() + static_cast<std::ptrdiff_t>(spheres), reaction.force.end());
+  state.sphere_contacts.assign(reaction.contacts.begin(), reaction.contacts.begin() + static_cast<std::ptrdiff_t>(spheres));
+  state.max_penetration = reaction.max_penetration;
+  state.sphere_penetration.assign(spheres, 0.0);
+  for (Eigen::Index v = 0; v < x.cols(); ++v) {
+    for (std::size_t s = 0; s < spheres; ++s) {
+      state.sphere_penetration[s] = std::max(state.sphere_penetration[s], -obstacles.gap(s, x.col(v)).gap);
+    }
+  }
+  return state;
+}
+
+}  // namespace growthuq::fe
