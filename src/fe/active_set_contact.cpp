@@ -5,6 +5,7 @@
 #include <cmath>
 #include <unordered_map>
 #include <cstdio>
+#include <limits>
 #include <cstdlib>
 
 namespace growthuq::fe {
@@ -55,6 +56,7 @@ double ActiveSetContact::select(const Obstacles& obstacles, const Eigen::Matrix3
   const double reach = hessian ? std::max(band_, reach_) : band_;
   active_of_node_.assign(static_cast<std::size_t>(x.cols()), -1);
   double largest = 0.0;
+  bool inside_any = false;
   Eigen::Index worst = 0; double worst_gap = 0; int worst_obstacle = -2, worst_active = -2;
   for (Eigen::Index v = 0; v < x.cols(); ++v) {
     Eigen::Vector3d residual = g.segment<3>(3 * v);
@@ -86,18 +88,22 @@ double ActiveSetContact::select(const Obstacles& obstacles, const Eigen::Matrix3
         stiffness /= mm;
       }
       const bool near = gap.gap <= band_ || (stiffness > 0 && multiplier > stiffness * gap.gap);
-      if (multiplier > 0 && near) {
+      // A node inside an obstacle (a load step's start: the probe moved) is always held, and
+      // lifted out by the step: Newton's model carries the obstacle's move into the wall.
+      const bool inside = gap.gap < -touching_gap && mm > 1e-12;
+      inside_any = inside_any || inside;
+      if ((multiplier > 0 && near) || inside) {
         ActiveContact contact;
         contact.node = static_cast<int>(v);
         contact.obstacle = obstacle;
         contact.gap = gap;
-        contact.multiplier = multiplier;
+        contact.multiplier = std::max(multiplier, 0.0);
         contact.frame = frame_for(m / std::sqrt(mm), held, contact.slot);
         active_of_node_[static_cast<std::size_t>(v)] = static_cast<int>(active_.size());
         active_.push_back(contact);
         // Complementarity: only a node on the surface may carry a normal force; one still in
         // the band keeps its whole gradient in the residual until the step has lifted it on.
-        if (gap.gap <= touching_gap) residual -= multiplier * m;
+        if (std::fabs(gap.gap) <= touching_gap) residual -= multiplier * m;
       }
     }
     if (residual.lpNorm<Eigen::Infinity>() > largest) {
@@ -105,6 +111,8 @@ double ActiveSetContact::select(const Obstacles& obstacles, const Eigen::Matrix3
       worst = v; worst_gap = gap.gap; worst_obstacle = obstacle; worst_active = active_of_node_[v];
     }
   }
+  // A state with a node inside an obstacle is no solution, whatever its gradient.
+  if (inside_any) largest = std::numeric_limits<double>::infinity();
   if (std::getenv("GQDBG")) std::fprintf(stderr, "    worst node %ld gap %.3e obstacle %d active %d (n active %zu) x %.4f %.4f %.4f\n", (long)worst, worst_gap, worst_obstacle, worst_active, active_.size(), x(0,worst), x(1,worst), x(2,worst));
   return largest;
 }
@@ -168,7 +176,7 @@ void ActiveSetContact::reduce(Eigen::SparseMatrix<double>& hessian, Eigen::Vecto
   for (const ActiveContact& contact : active_) {
     gradient.segment<3>(3 * contact.node) = contact.frame.transpose() * gradient.segment<3>(3 * contact.node);
     const Eigen::Index dof = 3 * contact.node + contact.slot;
-    lift[dof] = -std::max(contact.gap.gap, 0.0);
+    lift[dof] = -contact.gap.gap;
     held[static_cast<std::size_t>(dof)] = 1;
   }
   const Eigen::VectorXd coupling = hessian.selfadjointView<Eigen::Lower>() * lift;
@@ -191,12 +199,17 @@ void ActiveSetContact::to_nodal(Eigen::VectorXd& u) const {
 
 void ActiveSetContact::settle(const Obstacles& obstacles, Eigen::Matrix3Xd& x) const {
   // A tangential step leaves a held node off a curved surface by t^2 / (2 r): put it back on,
-  // along its normal (its free directions only), so it stays in contact exactly.
+  // along its constrained direction (its free directions only), so it stays in contact exactly.
+  // Newton's iteration on the gap along that line converges quadratically; three passes take
+  // the gap from O(t^2 / r) to rounding.
   for (const ActiveContact& contact : active_) {
-    const ObstacleGap g = obstacles.gap(static_cast<std::size_t>(contact.obstacle), x.col(contact.node));
-    const Eigen::Vector3d normal = contact.frame.col(contact.slot);
-    const double along = normal.dot(g.normal);
-    if (along > 0.5) x.col(contact.node) -= (g.gap / along) * normal;
+    const Eigen::Vector3d direction = contact.frame.col(contact.slot);
+    for (int pass = 0; pass < 3; ++pass) {
+      const ObstacleGap g = obstacles.gap(static_cast<std::size_t>(contact.obstacle), x.col(contact.node));
+      const double along = direction.dot(g.normal);
+      if (along <= 0.5 || std::fabs(g.gap) <= touching_gap) break;
+      x.col(contact.node) -= (g.gap / along) * direction;
+    }
   }
   project(obstacles, fixed_, x);
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -368,10 +369,11 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   };
   LoadSteppingOptions indentation;
   indentation.first_step = 1.0 / 48;  // the contact forms gently, then the steps grow
-  indentation.max_step = 1.0 / 8;
+  indentation.max_step = std::getenv("GQMAX") ? std::atof(std::getenv("GQMAX")) : 1.0 / 8;
   // A Newton step may not carry a node across the probe: the line search sees only the energy
   // at the step's end, where a wall that has jumped past the probe has none left in contact.
   indentation.newton.max_step = 0.25 * rho;
+  indentation.newton.first_step_whole = p.contact == ContactMethod::active_set;
   // The nodal residual that is left, 1e-6 of E h0 times the shortest edge, is below 1e-5 of the
   // smallest recorded force; the contact's active set makes the last digits linear to reach.
   indentation.newton.gradient_tolerance = 1e-6;

@@ -8,6 +8,9 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include <cstdio>
+#include <cstdlib>
+
 namespace growthuq::fe {
 namespace {
 
@@ -23,13 +26,16 @@ double seconds_since(Clock::time_point start) {
 // these sizes: 18 against 34 ms for 1311 dofs, 76 against 127 ms for 2703, on a loaded machine)
 // of the lower triangle; the symbolic analysis (fill-reducing ordering) is done once.
 struct NewtonSolver::Factor {
+  explicit Factor(const Eigen::SparseMatrix<double>& pattern) {
+    llt.cholmod().print = 0;  // a failed factorisation is expected (indefinite), not an error
+    llt.analyzePattern(pattern);
+  }
   Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
 };
 
-NewtonSolver::NewtonSolver(NewtonProblem& problem) : problem_(problem), factor_(std::make_unique<Factor>()) {
-  factor_->llt.cholmod().print = 0;  // a failed factorisation is expected (indefinite), not an error
+NewtonSolver::NewtonSolver(NewtonProblem& problem)
+    : problem_(problem), factor_(std::make_unique<Factor>(problem.pattern())) {
   hessian_ = problem_.pattern();
-  factor_->llt.analyzePattern(hessian_);
 }
 
 NewtonSolver::~NewtonSolver() = default;
@@ -47,7 +53,7 @@ NewtonReport NewtonSolver::minimise(Eigen::Matrix3Xd& x, const NewtonOptions& op
     report.energy = here.value;
     report.gradient_norm = stationarity;
     report.gradient_history.push_back(stationarity);
-    if (!std::isfinite(here.value) || !std::isfinite(stationarity)) {
+    if (!std::isfinite(here.value) || std::isnan(stationarity)) {
       report.status = NewtonStatus::not_finite;
       return report;
     }
@@ -59,14 +65,16 @@ NewtonReport NewtonSolver::minimise(Eigen::Matrix3Xd& x, const NewtonOptions& op
       report.status = NewtonStatus::max_iterations;
       return report;
     }
-    // Factorise H + shift I: the unshifted system first (Newton's quadratic convergence where it
-    // is positive definite), then a shift from a quarter of the last one that worked, grown
-    // tenfold (Nocedal and Wright 2006, algorithm 3.3).
     start = Clock::now();
+    double shift = 0.0;
+    // H + shift I: the unshifted system first (Newton's quadratic convergence where it is
+    // positive definite), then a shift from a quarter of the last nonzero one that worked (the
+    // indefinite states of a path are alike: starting again from the smallest shift cost three
+    // failed factorisations per shifted iteration), grown tenfold (Nocedal and Wright 2006,
+    // algorithm 3.3).
     double mean_diagonal = 0.0;
     for (Eigen::Index c = 0; c < n; ++c) mean_diagonal += std::fabs(hessian_.coeff(c, c));
     mean_diagonal = std::max(mean_diagonal / static_cast<double>(n), 1e-300);
-    double shift = 0.0;
     bool factorised = false;
     for (int attempt = 0; attempt <= options.max_shifts; ++attempt) {
       factor_->llt.setShift(shift);
@@ -84,7 +92,7 @@ NewtonReport NewtonSolver::minimise(Eigen::Matrix3Xd& x, const NewtonOptions& op
       return report;
     }
     if (shift > 0) ++report.shifted;
-    last_shift_ = shift;
+    if (shift > 0) last_shift_ = shift;
     step = -factor_->llt.solve(gradient);
     timing_.factorisation += seconds_since(start);
     problem_.to_nodal(step);
@@ -102,12 +110,13 @@ NewtonReport NewtonSolver::minimise(Eigen::Matrix3Xd& x, const NewtonOptions& op
     double alpha = 1.0;
     bool accepted = false;
     start = Clock::now();
+    const bool whole = iteration == 0 && options.first_step_whole;
     for (int k = 0; k < options.max_line_search; ++k) {
       trial = x + alpha * Eigen::Map<const Eigen::Matrix3Xd>(step.data(), 3, x.cols());
       problem_.make_admissible(trial);
       move = Eigen::Map<const Eigen::VectorXd>(trial.data(), n) - Eigen::Map<const Eigen::VectorXd>(x.data(), n);
       const double energy = problem_.energy(trial).value;
-      if (std::isfinite(energy) && (energy <= here.value + 1e-4 * std::min(0.0, problem_.slope(move)) ||
+      if (std::isfinite(energy) && (whole || energy <= here.value + 1e-4 * std::min(0.0, problem_.slope(move)) ||
                                     std::fabs(energy - here.value) <= noise)) {
         accepted = true;
         break;

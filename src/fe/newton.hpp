@@ -30,7 +30,8 @@ class NewtonProblem {
   virtual const Eigen::SparseMatrix<double>& pattern() const = 0;
   // At an admissible x: the energy, and (gradient, hessian) of the step's system H u = -g in the
   // problem's coordinates (u need not be the nodal move: see to_nodal). Also returns in
-  // `stationarity` the largest entry of the constrained gradient (zero at a solution).
+  // `stationarity` the largest entry of the constrained gradient (zero at a solution; infinite at
+  // a state that is not admissible).
   virtual EnergyValue linearise(const Eigen::Matrix3Xd& x, Eigen::VectorXd& gradient,
                                 Eigen::SparseMatrix<double>& hessian, double& stationarity) = 0;
   virtual EnergyValue energy(const Eigen::Matrix3Xd& x) const = 0;
@@ -48,6 +49,10 @@ struct NewtonOptions {
   double max_step = 0.25;            // largest nodal move of one iteration
   int max_line_search = 40;
   int max_shifts = 30;
+  // Take the first step whole (after make_admissible), without the line search: for a start
+  // that is not admissible, whose energy the line search cannot compare with (a load step's
+  // predicted state, which the first step makes admissible).
+  bool first_step_whole = false;
 };
 
 enum class NewtonStatus { converged, max_iterations, line_search_failed, factorisation_failed, not_finite };

@@ -60,10 +60,9 @@ void ShellObjective::make_admissible(Eigen::Matrix3Xd& trial) const {
 
 void ShellObjective::start_step(Eigen::Matrix3Xd& x) const {
   const Obstacles& obstacles = assembly_.loads().obstacles;
-  if (options_.method == ContactMethod::active_set) {
-    ActiveSetContact::project(obstacles, assembly_.problem().fixed, x);
-    return;
-  }
+  // Active set: nothing; the first Newton step lifts the nodes the obstacles' move put inside
+  // out of them, through the wall's stiffness (a tangent predictor), and is taken whole.
+  if (options_.method == ContactMethod::active_set) return;
   // Penalty: otherwise the first Newton steps would fight penalty forces of the whole step's
   // motion, and a node just touching (zero penetration, where the penalty's curvature vanishes)
   // would be invisible to the Newton model: a tube resting on the substrate would be free to
