@@ -4,9 +4,7 @@
 #include <array>
 #include <cmath>
 #include <unordered_map>
-#include <cstdio>
 #include <limits>
-#include <cstdlib>
 
 namespace growthuq::fe {
 namespace {
@@ -46,7 +44,7 @@ Eigen::Matrix3d frame_for(const Eigen::Vector3d& m, const std::array<bool, 3>& f
 }  // namespace
 
 ActiveSetContact::ActiveSetContact(std::vector<char> fixed, double band, double reach)
-    : fixed_(std::move(fixed)), band_(band), reach_(reach) {}
+    : fixed_(std::move(fixed)), band_(std::max(band, touching_gap)), reach_(reach) {}
 
 double ActiveSetContact::select(const Obstacles& obstacles, const Eigen::Matrix3Xd& x, const Eigen::VectorXd& g,
                                 const Eigen::SparseMatrix<double>* hessian) {
@@ -57,7 +55,6 @@ double ActiveSetContact::select(const Obstacles& obstacles, const Eigen::Matrix3
   active_of_node_.assign(static_cast<std::size_t>(x.cols()), -1);
   double largest = 0.0;
   bool inside_any = false;
-  Eigen::Index worst = 0; double worst_gap = 0; int worst_obstacle = -2, worst_active = -2;
   for (Eigen::Index v = 0; v < x.cols(); ++v) {
     Eigen::Vector3d residual = g.segment<3>(3 * v);
     ObstacleGap gap;
@@ -106,14 +103,10 @@ double ActiveSetContact::select(const Obstacles& obstacles, const Eigen::Matrix3
         if (std::fabs(gap.gap) <= touching_gap) residual -= multiplier * m;
       }
     }
-    if (residual.lpNorm<Eigen::Infinity>() > largest) {
-      largest = residual.lpNorm<Eigen::Infinity>();
-      worst = v; worst_gap = gap.gap; worst_obstacle = obstacle; worst_active = active_of_node_[v];
-    }
+    largest = std::max(largest, residual.lpNorm<Eigen::Infinity>());
   }
   // A state with a node inside an obstacle is no solution, whatever its gradient.
   if (inside_any) largest = std::numeric_limits<double>::infinity();
-  if (std::getenv("GQDBG")) std::fprintf(stderr, "    worst node %ld gap %.3e obstacle %d active %d (n active %zu) x %.4f %.4f %.4f\n", (long)worst, worst_gap, worst_obstacle, worst_active, active_.size(), x(0,worst), x(1,worst), x(2,worst));
   return largest;
 }
 
@@ -197,12 +190,16 @@ void ActiveSetContact::to_nodal(Eigen::VectorXd& u) const {
   }
 }
 
-void ActiveSetContact::settle(const Obstacles& obstacles, Eigen::Matrix3Xd& x) const {
+void ActiveSetContact::settle(const Obstacles& obstacles, Eigen::Matrix3Xd& x, bool lifted) const {
   // A tangential step leaves a held node off a curved surface by t^2 / (2 r): put it back on,
   // along its constrained direction (its free directions only), so it stays in contact exactly.
   // Newton's iteration on the gap along that line converges quadratically; three passes take
   // the gap from O(t^2 / r) to rounding.
+  // A node the step lifts onto the surface is settled for the whole step only: on a shortened
+  // step it moves with the step's length, so that a short enough step is always a short move
+  // (the line search's guarantee of a decrease).
   for (const ActiveContact& contact : active_) {
+    if (!lifted && std::fabs(contact.gap.gap) > touching_gap) continue;
     const Eigen::Vector3d direction = contact.frame.col(contact.slot);
     for (int pass = 0; pass < 3; ++pass) {
       const ObstacleGap g = obstacles.gap(static_cast<std::size_t>(contact.obstacle), x.col(contact.node));

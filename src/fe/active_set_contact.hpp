@@ -56,9 +56,10 @@ class ActiveSetContact {
   void reduce(Eigen::SparseMatrix<double>& hessian, Eigen::VectorXd& gradient) const;
   // The nodal move R u of a solution u of the reduced system, in place.
   void to_nodal(Eigen::VectorXd& u) const;
-  // A trial point made admissible: the held nodes put back on their obstacles' surfaces, then
-  // every node out of every obstacle.
-  void settle(const Obstacles&, Eigen::Matrix3Xd& x) const;
+  // A trial point made admissible: the held nodes that touched put back on their obstacles'
+  // surfaces (with `lifted`, those the step lifts too: for the whole step), then every node out
+  // of every obstacle.
+  void settle(const Obstacles&, Eigen::Matrix3Xd& x, bool lifted = true) const;
   // Every node out of every obstacle (projected onto the surface), fixed dofs untouched.
   static void project(const Obstacles&, const std::vector<char>& fixed, Eigen::Matrix3Xd& x);
   // The obstacles' reaction at x with the wall's gradient g there (after select()).

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 namespace growthuq::fe {
 namespace {
@@ -60,7 +58,6 @@ EquilibriumResult solve_equilibrium(ShellObjective& objective, NewtonSolver& sol
       result.newton_iterations += report.iterations;
       converged = report.status == NewtonStatus::converged;
     }
-    if (std::getenv("GQDBG")) std::fprintf(stderr, "step t=%g dt=%g iters=%d status=%d\n", t_next, step, report.iterations, (int)report.status);
     if (!converged) {
       if (report.status != NewtonStatus::converged) last_failure = describe(report.status);
       ++result.cuts;

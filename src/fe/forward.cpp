@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -352,7 +351,8 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
     const ContactState contact = objective->contact_state(state);
     double radius = 0.0;
     for (Eigen::Index v = 0; v < state.cols(); ++v) {
-      if ((state.col(v) - probe.centre).norm() < probe.radius) {
+      // On or in the probe: exact contact holds a node on its surface (gap zero to rounding).
+      if ((state.col(v) - probe.centre).norm() < probe.radius * (1 + 1e-9)) {
         radius = std::max(radius, std::hypot(state(1, v) - probe.centre.y(), state(2, v) - probe.centre.z()));
       }
     }
@@ -369,7 +369,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   };
   LoadSteppingOptions indentation;
   indentation.first_step = 1.0 / 48;  // the contact forms gently, then the steps grow
-  indentation.max_step = std::getenv("GQMAX") ? std::atof(std::getenv("GQMAX")) : 1.0 / 8;
+  indentation.max_step = 1.0 / 8;
   // A Newton step may not carry a node across the probe: the line search sees only the energy
   // at the step's end, where a wall that has jumped past the probe has none left in contact.
   indentation.newton.max_step = 0.25 * rho;
@@ -386,6 +386,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   }
   result.newton_iterations += indented.newton_iterations;
   result.load_steps = indented.steps;
+  result.indentation_iterations = indented.newton_iterations;
   add_timing(*solver, *objective, timing);
   copy_timing(timing, result);
   fill_fields(setup, *assembly, x, result);

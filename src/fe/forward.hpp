@@ -54,6 +54,7 @@ struct ForwardResult {
   double thickness_stretch = 0.0;  // h/h0 there
   double max_penetration = 0.0;    // deepest node in the probe or substrate over the path, / d0
   int load_steps = 0;              // converged indentation steps
+  int indentation_iterations = 0;  // Newton iterations of the indentation alone
   int newton_iterations = 0;
   double seconds_assembly = 0, seconds_factorisation = 0, seconds_contact = 0;
   int factorisations = 0;          // sparse Cholesky factorisations (shifted retries included)

@@ -5,11 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
-#include <cstdio>
-#include <cstdlib>
 
 namespace growthuq::fe {
 namespace {
@@ -113,7 +109,7 @@ NewtonReport NewtonSolver::minimise(Eigen::Matrix3Xd& x, const NewtonOptions& op
     const bool whole = iteration == 0 && options.first_step_whole;
     for (int k = 0; k < options.max_line_search; ++k) {
       trial = x + alpha * Eigen::Map<const Eigen::Matrix3Xd>(step.data(), 3, x.cols());
-      problem_.make_admissible(trial);
+      problem_.make_admissible(trial, alpha);
       move = Eigen::Map<const Eigen::VectorXd>(trial.data(), n) - Eigen::Map<const Eigen::VectorXd>(x.data(), n);
       const double energy = problem_.energy(trial).value;
       if (std::isfinite(energy) && (whole || energy <= here.value + 1e-4 * std::min(0.0, problem_.slope(move)) ||
@@ -128,7 +124,6 @@ NewtonReport NewtonSolver::minimise(Eigen::Matrix3Xd& x, const NewtonOptions& op
       report.status = NewtonStatus::line_search_failed;
       return report;
     }
-    if (std::getenv("GQDBG")) std::fprintf(stderr, "  it %d stat %.3e shift %.1e alpha %.3g\n", iteration, stationarity, shift, alpha);
     x = trial;
     report.iterations = iteration + 1;
   }

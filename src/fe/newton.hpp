@@ -39,8 +39,9 @@ class NewtonProblem {
   virtual void to_nodal(Eigen::VectorXd& /*step*/) const {}
   // The first-order change of the energy for a nodal move from the last linearised x.
   virtual double slope(const Eigen::VectorXd& move) const = 0;
-  // A trial point moved into the admissible set, in place (nothing by default).
-  virtual void make_admissible(Eigen::Matrix3Xd& /*trial*/) const {}
+  // A trial point, `fraction` of the way along the step (1: the whole step), moved into the
+  // admissible set in place (nothing by default).
+  virtual void make_admissible(Eigen::Matrix3Xd& /*trial*/, double /*fraction*/) const {}
 };
 
 struct NewtonOptions {

@@ -80,6 +80,8 @@ void curve_in_si(const ForwardResult& result, double d0, double young, Indentati
   curve.axial_stretch = result.axial_stretch;
   curve.thickness_stretch = result.thickness_stretch;
   curve.newton_iterations += result.newton_iterations;
+  curve.indentation_load_steps += result.load_steps;
+  curve.indentation_newton_iterations += result.indentation_iterations;
   curve.seconds_assembly += result.seconds_assembly;
   curve.seconds_factorisation += result.seconds_factorisation;
   curve.factorisations += result.factorisations;

@@ -50,9 +50,9 @@ void ShellObjective::to_nodal(Eigen::VectorXd& step) const {
   if (options_.method == ContactMethod::active_set) active_set_.to_nodal(step);
 }
 
-void ShellObjective::make_admissible(Eigen::Matrix3Xd& trial) const {
+void ShellObjective::make_admissible(Eigen::Matrix3Xd& trial, double fraction) const {
   if (options_.method == ContactMethod::active_set) {
-    active_set_.settle(assembly_.loads().obstacles, trial);
+    active_set_.settle(assembly_.loads().obstacles, trial, fraction == 1.0);
   } else if (cap_ > 0) {
     assembly_.limit_penetration(trial, cap_);
   }

@@ -52,7 +52,7 @@ class ShellObjective final : public NewtonProblem {
   EnergyValue energy(const Eigen::Matrix3Xd& x) const override;
   void to_nodal(Eigen::VectorXd& step) const override;
   double slope(const Eigen::VectorXd& move) const override { return gradient_.dot(move); }
-  void make_admissible(Eigen::Matrix3Xd& trial) const override;
+  void make_admissible(Eigen::Matrix3Xd& trial, double fraction) const override;
 
   // The start of a load step from a predicted state: nodes put out of the obstacles (active
   // set), or into the penalty's band (penalty).

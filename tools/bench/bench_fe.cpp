@@ -30,8 +30,9 @@ int main(int argc, char** argv) {
     const std::string flag = argv[i], value = argv[i + 1];
     if (flag == "--mesh") options.mesh = mesh_from(value);
     else if (flag == "--repetitions") repetitions = std::atoi(value.c_str());
+    else if (flag == "--contact") options.contact = parse_shell_fe_contact(value, "bench_fe", "--contact");
     else {
-      std::cerr << "bench_fe: unknown option " << flag << " (--mesh coarse|default|fine|finer, --repetitions N)\n";
+      std::cerr << "bench_fe: unknown option " << flag << " (--mesh coarse|default|fine|finer, --contact active_set|penalty, --repetitions N)\n";
       return 2;
     }
   }
@@ -61,10 +62,14 @@ int main(int argc, char** argv) {
     inverse_cpu.push_back(bench::thread_cpu_seconds() - inverse_start);
   }
   std::cout << "mesh = " << to_string(options.mesh) << "\n";
+  std::cout << "contact = " << to_string(options.contact) << "\n";
   print("forward_cpu_seconds", bench::median(forward_cpu));
   print("forward_wall_seconds", curve.seconds);
   print("forward_points", static_cast<double>(curve.depth.size()));
   print("forward_newton_iterations", curve.newton_iterations);
+  print("forward_load_steps", curve.indentation_load_steps);
+  print("forward_iterations_per_load_step",
+        curve.indentation_newton_iterations / std::max(1.0, static_cast<double>(curve.indentation_load_steps)));
   const double solver = curve.seconds;
   print("share_assembly", curve.seconds_assembly / solver);
   print("share_factorisation", curve.seconds_factorisation / solver);

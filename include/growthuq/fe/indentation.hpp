@@ -134,7 +134,9 @@ struct IndentationCurve {
   double thickness_stretch = 0.0;        // h/h0 in the far field
   double unstressed_thickness = 0.0;     // h0, m
   double window_contact_radius = 0.0;    // contact radius at the window's top, m
-  int newton_iterations = 0;
+  int newton_iterations = 0;             // inflation and indentation
+  int indentation_load_steps = 0;        // converged steps of the probe
+  int indentation_newton_iterations = 0;
   double seconds = 0.0;                  // wall time of the whole call
   double seconds_assembly = 0.0, seconds_factorisation = 0.0, seconds_contact = 0.0;
   int factorisations = 0;                // sparse Cholesky factorisations, shifted retries included
