@@ -1,0 +1,26 @@
+// The sensitivity indices of a campaign's lines (sensitivity/line_sensitivity.hpp) as files:
+// sensitivity.csv, one row per line, output and input, and the same table in results.h5.
+//
+// results.h5:
+//   /sensitivity   one row per line, output and input: the columns of sensitivity.csv
+//                  (attribute `method`: what the numbers are)
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "growthuq/io/results_h5.hpp"
+#include "growthuq/sensitivity/line_sensitivity.hpp"
+
+namespace growthuq {
+
+inline constexpr const char* sensitivity_csv_name = "sensitivity.csv";
+
+// Columns: line, output, input, method (first_order_rank), index, ci_low, ci_high, samples_used,
+// sections. Lines in the order given, outputs and inputs in the line's order.
+std::string sensitivity_csv_text(const std::vector<LineSensitivity>& lines);
+
+// Writes sensitivity.csv to `directory` and the table to `h5` (may be null).
+void write_sensitivity(const std::vector<LineSensitivity>& lines, ResultsH5Writer* h5, const std::string& directory);
+
+}  // namespace growthuq

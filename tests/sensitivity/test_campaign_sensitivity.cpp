@@ -1,0 +1,98 @@
+// `growthuq run` writes the first-order indices of every line (sensitivity.csv, results.h5's
+// /sensitivity, the report's table), and they agree with a second, independent estimator of
+// Var(E[Y | X_i]) / Var(Y) computed here from samples.csv: the between-bin variance of Y over
+// equal-count bins of X_i, corrected for the bins' own noise.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "growthuq/io/csv.hpp"
+#include "support/cli_run.hpp"
+#include "support/scratch_directory.hpp"
+#include "support/text_file.hpp"
+
+using namespace growthuq;
+using namespace growthuq::testing;
+
+namespace {
+
+// Var(E[Y | X]) / Var(Y) by bins: the samples sorted by x in B bins of (nearly) equal count m;
+// the between-bin sum (1/n) sum_b m_b (ybar_b - ybar)^2 overestimates Var(E[Y | bin]) by the
+// bins' sampling noise, about (B / n) times the mean within-bin variance, which is removed.
+// With E[Y | X] smooth, 40 bins of 100 leave a discretization bias well below the tolerance.
+double binned_index(const std::vector<double>& x, const std::vector<double>& y, std::size_t bins) {
+  const std::size_t n = x.size();
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return x[a] < x[b]; });
+  const double mean = std::accumulate(y.begin(), y.end(), 0.0) / static_cast<double>(n);
+  double total = 0, between = 0, within = 0;
+  for (const double v : y) total += (v - mean) * (v - mean);
+  for (std::size_t b = 0; b < bins; ++b) {
+    const std::size_t begin = b * n / bins, end = (b + 1) * n / bins;
+    double bin_mean = 0;
+    for (std::size_t k = begin; k < end; ++k) bin_mean += y[order[k]];
+    bin_mean /= static_cast<double>(end - begin);
+    double squares = 0;
+    for (std::size_t k = begin; k < end; ++k) squares += (y[order[k]] - bin_mean) * (y[order[k]] - bin_mean);
+    between += static_cast<double>(end - begin) * (bin_mean - mean) * (bin_mean - mean);
+    within += squares / static_cast<double>(end - begin - 1) / static_cast<double>(bins);
+  }
+  return (between / static_cast<double>(n) - static_cast<double>(bins) / static_cast<double>(n) * within) /
+         (total / static_cast<double>(n));
+}
+
+}  // namespace
+
+TEST_CASE("campaign sensitivity: sensitivity.csv, results.h5 and the report, checked against binned estimates") {
+  ScratchDirectory scratch("campaign_sensitivity");
+  const std::string source = GROWTHUQ_SOURCE_DIR;
+  // One line of the shipped pme48 law, correlated by the physics, 4000 samples; turgor and modulus.
+  spit(scratch.root / "sensitivity.ini", "[campaign]\nname = sensitivity\nseed = 28\nsamples = 4000\noutputs = p, E\n"
+                                         "output_dir = out\nformats = csv, hdf5\n\n[instrument]\nprobe_radius_um = 0.25\n"
+                                         "poisson_ratio = 0.2\n\n[physics_correlation]\nsamples = 2000\n\n[line pme48]\n"
+                                         "distributions = " + source + "/distributions/pme48.ini\nrank_correlation = physics\n");
+  const CliOutcome run = run_cli("run sensitivity.ini --quiet", scratch.root);
+  REQUIRE_MESSAGE(run.exit_code == 0, run.err);
+  CHECK(run.out.find("First-order sensitivity S = Var(E[output | input]) / Var(output)") != std::string::npos);
+
+  const CsvTable table = read_csv((scratch.root / "out" / "sensitivity.csv").string());
+  CHECK(table.header == std::vector<std::string>{"line", "output", "input", "method", "index", "ci_low", "ci_high",
+                                                  "samples_used", "sections"});
+  const CsvTable samples = read_csv((scratch.root / "out" / "samples.csv").string());
+  // status ok rows only (the indices use those, Eq. (T3) of src/stats/README.md).
+  const std::size_t status = samples.column_index("status");
+  std::map<std::string, std::vector<double>> columns;
+  for (std::size_t r = 0; r < samples.rows.size(); ++r) {
+    if (samples.rows[r][status] != "ok") continue;
+    for (std::size_t c = 0; c < samples.header.size(); ++c) {
+      if (c != status && c != 0) columns[samples.header[c]].push_back(std::stod(samples.rows[r][c]));
+    }
+  }
+  std::size_t checked = 0;
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const auto& row = table.rows[r];
+    CAPTURE(row[1]);
+    CAPTURE(row[2]);
+    CHECK(row[0] == "pme48");
+    CHECK(row[3] == "first_order_rank");
+    const double index = std::stod(row[4]), low = std::stod(row[5]), high = std::stod(row[6]);
+    CHECK(low < index);
+    CHECK(index < high);
+    CHECK(std::stoul(row[7]) == columns.at(row[1]).size());
+    CHECK(row[8] == "20");
+    const double binned = binned_index(columns.at(row[2]), columns.at(row[1]), 40);
+    MESSAGE(row[1] << " on " << row[2] << ": rank " << index << " [" << low << ", " << high << "], binned " << binned);
+    // Two estimators of one number from one sample of 4000: each has a standard error of about
+    // 0.01 here (the interval's half width / 2); 0.04 is about 3 of their difference's.
+    CHECK(std::abs(index - binned) < 0.04);
+    ++checked;
+  }
+  CHECK(checked == 2 * (columns.size() - 2));  // every input for p and E
+}
