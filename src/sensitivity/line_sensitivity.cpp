@@ -76,7 +76,7 @@ std::string format_line_sensitivity(const LineSensitivity& sensitivity) {
     std::size_t name_width = 0;
     for (const std::string& input : sensitivity.inputs) name_width = std::max(name_width, input.size());
     name_width += 4;
-    std::size_t cell = 20;
+    std::size_t cell = 22;  // "-0.06 [-0.10, -0.01]" and two blanks
     for (const std::string& output : sensitivity.outputs) cell = std::max(cell, output.size() + 2);
     text += std::string(name_width, ' ');
     for (const std::string& output : sensitivity.outputs) text += padded_left(output, cell);
