@@ -24,6 +24,7 @@
 #include "campaign/line_comparison_outputs.hpp"
 #include "campaign/raw_data_outputs.hpp"
 #include "campaign/sensitivity_outputs.hpp"
+#include "campaign/sensitivity_settings.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/printable.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -194,6 +195,12 @@ class OutputObserver final : public RunObserver {
     sensitivity_.push_back(line_sensitivity(result, campaign_.campaign().seed));
     line_reports_ += "\nline " + result.name + ": input rank correlation (Spearman)\n" + format_input_correlation(result) +
                      format_line_analysis(statistics.analysis) + format_line_sensitivity(sensitivity_.back());
+    // The Shapley effects, when the campaign asks for them: new runs of the line's models, on
+    // this process alone (src/campaign/line_shapley.hpp).
+    if (sensitivity_settings_.shapley) {
+      shapley_.push_back(line_shapley(campaign_, result, sensitivity_settings_));
+      line_reports_ += format_line_shapley(shapley_.back());
+    }
     wait_for_writer();
     writer_ = std::thread([this, line = std::move(result), written = std::move(statistics)] {
       use_every_processor();
@@ -214,7 +221,7 @@ class OutputObserver final : public RunObserver {
     add_data_intervals(summaries_, uncertainty.rows);
     if (h5_) h5_->replace_summaries(summaries_);
     write_file_atomically(in_directory(staging_, summary_csv_name), summary_csv_text(summaries_), Overwrite::allow);
-    write_sensitivity(sensitivity_in_campaign_order(), h5_ ? &*h5_ : nullptr, staging_);
+    write_sensitivity(sensitivity_in_campaign_order(), shapley_, h5_ ? &*h5_ : nullptr, staging_);
     const std::string raw_data_report =
         write_raw_data_outputs(campaign_, summaries_, std::move(uncertainty), h5_ ? &*h5_ : nullptr, staging_);
     if (h5_) {
@@ -284,6 +291,8 @@ class OutputObserver final : public RunObserver {
   std::optional<ResultsH5Writer> h5_;
   std::vector<QuantitySummary> summaries_;
   std::vector<LineSensitivity> sensitivity_;
+  SensitivitySettings sensitivity_settings_ = sensitivity_settings(campaign_.campaign());
+  std::vector<LineShapley> shapley_;
   std::string line_reports_;
   std::thread writer_;
   std::exception_ptr failure_;

@@ -12,54 +12,75 @@ namespace {
 const std::vector<std::string> columns{"line",    "output",  "input",        "method",  "index",
                                        "ci_low", "ci_high", "samples_used", "sections"};
 
-constexpr const char* method_name = "first_order_rank";
-
 constexpr const char* method_text =
     "first_order_rank: full first-order index S = Var(E[output | input]) / Var(output) from the campaign's samples with "
     "status ok, rank (nearest neighbour in rank) estimator (Chatterjee 2021; Gamboa et al. 2022); ci_low/ci_high: 95 % "
-    "interval by sectioning into `sections` random parts (Asmussen and Glynn 2007); src/sensitivity/README.md";
+    "interval by sectioning into `sections` random parts (Asmussen and Glynn 2007). shapley_share: Shapley effect over "
+    "Var(output) (Song, Nelson and Staum 2016), summing to 1 over the inputs, from samples_used new model runs, inputs "
+    "joined by a Gaussian copula of the line's rank correlation; src/sensitivity/README.md";
 
-// Each (line, output, input) once, in the order of the table.
-template <typename Row>
-void for_each_row(const std::vector<LineSensitivity>& lines, Row row) {
+struct Row {
+  std::string line, output, input, method;
+  double index, low, high;
+  std::size_t used, sections;
+};
+
+// Every row of the table, in its order.
+std::vector<Row> rows_of(const std::vector<LineSensitivity>& lines, const std::vector<LineShapley>& shapley) {
+  std::vector<Row> rows;
   for (const LineSensitivity& line : lines) {
     for (std::size_t o = 0; o < line.outputs.size(); ++o) {
-      for (std::size_t i = 0; i < line.inputs.size() && !line.first_order.empty(); ++i) row(line, o, i);
+      for (std::size_t i = 0; i < line.inputs.size() && !line.first_order.empty(); ++i) {
+        const RankIndexEstimate& e = line.first_order[i][o];
+        rows.push_back({line.line, line.outputs[o], line.inputs[i], "first_order_rank", e.index, e.low, e.high,
+                        line.samples_used, line.sections});
+      }
+    }
+    for (const LineShapley& s : shapley) {
+      if (s.line != line.line || !s.computed) continue;
+      for (std::size_t o = 0; o < s.outputs.size(); ++o) {
+        for (std::size_t i = 0; i < s.inputs.size(); ++i) {
+          const auto r = static_cast<Eigen::Index>(i), c = static_cast<Eigen::Index>(o);
+          rows.push_back({s.line, s.outputs[o], s.inputs[i], "shapley_share", s.effects.share(r, c), s.effects.share_low(r, c),
+                          s.effects.share_high(r, c), s.effects.model_runs,
+                          static_cast<std::size_t>(ShapleySettings{}.sections)});
+        }
+      }
     }
   }
+  return rows;
 }
 
 }  // namespace
 
-std::string sensitivity_csv_text(const std::vector<LineSensitivity>& lines) {
+std::string sensitivity_csv_text(const std::vector<LineSensitivity>& lines, const std::vector<LineShapley>& shapley) {
   CsvWriter writer(columns);
-  for_each_row(lines, [&](const LineSensitivity& line, std::size_t o, std::size_t i) {
-    const RankIndexEstimate& e = line.first_order[i][o];
-    writer.add_row({line.line, line.outputs[o], line.inputs[i], method_name, format_double(e.index), format_double(e.low),
-                    format_double(e.high), std::to_string(line.samples_used), std::to_string(line.sections)});
-  });
+  for (const Row& row : rows_of(lines, shapley)) {
+    writer.add_row({row.line, row.output, row.input, row.method, format_double(row.index), format_double(row.low),
+                    format_double(row.high), std::to_string(row.used), std::to_string(row.sections)});
+  }
   return writer.text();
 }
 
-void write_sensitivity(const std::vector<LineSensitivity>& lines, ResultsH5Writer* h5, const std::string& directory) {
-  write_file_atomically((std::filesystem::path(directory) / sensitivity_csv_name).string(), sensitivity_csv_text(lines),
+void write_sensitivity(const std::vector<LineSensitivity>& lines, const std::vector<LineShapley>& shapley, ResultsH5Writer* h5,
+                       const std::string& directory) {
+  write_file_atomically((std::filesystem::path(directory) / sensitivity_csv_name).string(), sensitivity_csv_text(lines, shapley),
                         Overwrite::allow);
   if (h5 == nullptr) return;
   ExtraColumn line{"line"}, output{"output"}, input{"input"}, method{"method"};
   ExtraColumn index{.name = "index", .unit = "1"}, low{.name = "ci_low", .unit = "1"}, high{.name = "ci_high", .unit = "1"};
   ExtraColumn used{.name = "samples_used", .unit = "1"}, sections{.name = "sections", .unit = "1"};
-  for_each_row(lines, [&](const LineSensitivity& l, std::size_t o, std::size_t i) {
-    const RankIndexEstimate& e = l.first_order[i][o];
-    line.text.push_back(l.line);
-    output.text.push_back(l.outputs[o]);
-    input.text.push_back(l.inputs[i]);
-    method.text.push_back(method_name);
-    index.real.push_back(e.index);
-    low.real.push_back(e.low);
-    high.real.push_back(e.high);
-    used.integer.push_back(static_cast<std::int64_t>(l.samples_used));
-    sections.integer.push_back(static_cast<std::int64_t>(l.sections));
-  });
+  for (const Row& row : rows_of(lines, shapley)) {
+    line.text.push_back(row.line);
+    output.text.push_back(row.output);
+    input.text.push_back(row.input);
+    method.text.push_back(row.method);
+    index.real.push_back(row.index);
+    low.real.push_back(row.low);
+    high.real.push_back(row.high);
+    used.integer.push_back(static_cast<std::int64_t>(row.used));
+    sections.integer.push_back(static_cast<std::int64_t>(row.sections));
+  }
   if (line.text.empty()) return;
   h5->write_table("sensitivity", {line, output, input, method, index, low, high, used, sections});
   h5->write_attribute("sensitivity", "method", method_text);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "campaign/line_shapley.hpp"
 #include "growthuq/io/results_h5.hpp"
 #include "growthuq/sensitivity/line_sensitivity.hpp"
 
@@ -16,11 +17,14 @@ namespace growthuq {
 
 inline constexpr const char* sensitivity_csv_name = "sensitivity.csv";
 
-// Columns: line, output, input, method (first_order_rank), index, ci_low, ci_high, samples_used,
-// sections. Lines in the order given, outputs and inputs in the line's order.
-std::string sensitivity_csv_text(const std::vector<LineSensitivity>& lines);
+// Columns: line, output, input, method, index, ci_low, ci_high, samples_used, sections. Per line
+// (in the order given) the first-order rows (method first_order_rank; samples_used: the samples
+// with status ok), then, where computed, the Shapley rows (method shapley_share: Sh_i / Var;
+// samples_used: the model runs); outputs and inputs in the line's order.
+std::string sensitivity_csv_text(const std::vector<LineSensitivity>& lines, const std::vector<LineShapley>& shapley = {});
 
 // Writes sensitivity.csv to `directory` and the table to `h5` (may be null).
-void write_sensitivity(const std::vector<LineSensitivity>& lines, ResultsH5Writer* h5, const std::string& directory);
+void write_sensitivity(const std::vector<LineSensitivity>& lines, const std::vector<LineShapley>& shapley, ResultsH5Writer* h5,
+                       const std::string& directory);
 
 }  // namespace growthuq

@@ -279,14 +279,23 @@ ShapleyEffects shapley_effects(const BatchModel& model, const std::vector<Quanti
     }
   }
   // Eq. (S5): the mean over sections and the t interval of their spread (sectioning).
-  result.effect = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(d), m);
-  for (const Eigen::MatrixXd& s : sections) result.effect += s / static_cast<double>(k);
-  Eigen::MatrixXd squares = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(d), m);
-  for (const Eigen::MatrixXd& s : sections) squares += (s - result.effect).cwiseAbs2();
   const double t = gsl_cdf_tdist_Pinv(0.975, static_cast<double>(k - 1));
-  const Eigen::MatrixXd half = t * (squares / static_cast<double>(k - 1) / static_cast<double>(k)).cwiseSqrt();
-  result.low = result.effect - half;
-  result.high = result.effect + half;
+  const auto sectioned = [&](const std::vector<Eigen::MatrixXd>& parts, Eigen::MatrixXd& mean, Eigen::MatrixXd& low,
+                             Eigen::MatrixXd& high) {
+    mean = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(d), m);
+    for (const Eigen::MatrixXd& s : parts) mean += s / static_cast<double>(k);
+    Eigen::MatrixXd squares = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(d), m);
+    for (const Eigen::MatrixXd& s : parts) squares += (s - mean).cwiseAbs2();
+    const Eigen::MatrixXd half = t * (squares / static_cast<double>(k - 1) / static_cast<double>(k)).cwiseSqrt();
+    low = mean - half;
+    high = mean + half;
+  };
+  sectioned(sections, result.effect, result.low, result.high);
+  std::vector<Eigen::MatrixXd> shares = sections;
+  for (std::size_t section = 0; section < k; ++section) {
+    for (Eigen::Index o = 0; o < m; ++o) shares[section].col(o) /= variance(static_cast<Eigen::Index>(section), o);
+  }
+  sectioned(shares, result.share, result.share_low, result.share_high);
   result.variance = variance.colwise().mean().transpose();
   result.model_runs = sampler.runs;
   return result;

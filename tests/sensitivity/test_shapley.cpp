@@ -78,6 +78,7 @@ TEST_CASE("Shapley estimator, exact permutations: the linear Gaussian model's cl
   // Sum property (Eq. (S3)): exactly the estimated variance, each section's and so the mean's.
   CHECK(sh.effect.col(0).sum() == doctest::Approx(sh.variance(0)).epsilon(1e-12));
   CHECK(sh.variance(0) == doctest::Approx(2.6).epsilon(0.03));  // sd of a variance from 20000 normal draws: 1 %
+  CHECK(sh.share.col(0).sum() == doctest::Approx(1.0).epsilon(1e-12));  // each section's shares sum to 1
   for (Eigen::Index i = 0; i < 3; ++i) {
     CAPTURE(i);
     MESSAGE("Sh_" << i + 1 << ": " << sh.effect(i, 0) << " [" << sh.low(i, 0) << ", " << sh.high(i, 0) << "], exact " << exact(i));

@@ -34,6 +34,8 @@ struct ShapleyEffects {
   Eigen::MatrixXd effect;  // inputs x outputs, in the output's unit squared; each column sums to variance
   Eigen::MatrixXd low, high;  // 95 % interval (sectioning, Eq. (S5))
   Eigen::VectorXd variance;   // Var(Y) per output, estimated from N_v draws
+  // Sh_i / Var(Y): each section's effects over its own variance, then as above; sums to 1.
+  Eigen::MatrixXd share, share_low, share_high;
   std::size_t model_runs = 0;
   bool exact_permutations = true;  // false: random permutations (d > 6)
   std::vector<std::size_t> skipped;  // per output: inner groups left out for a non-finite value
