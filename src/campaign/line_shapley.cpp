@@ -67,7 +67,9 @@ LineShapley line_shapley(const PreparedCampaign& campaign, const LineResult& res
   std::vector<Quantile> marginals;
   std::vector<std::string> names;
   for (const LineVariable& variable : variables) {
-    marginals.push_back([&distribution = variable.distribution](double u) { return quantile(distribution, u); });
+    marginals.push_back([&distribution = variable.distribution](std::span<const double> u, std::span<double> x) {
+      quantiles(distribution, u, x);
+    });
     names.push_back(variable.name);
   }
   const std::size_t outputs = campaign.computed_outputs().size();

@@ -66,16 +66,26 @@ class Sampler {
   Sampler(const BatchModel& model, const std::vector<Quantile>& marginals, const Eigen::MatrixXd& copula, const ShapleySettings& settings)
       : model_(model), marginals_(marginals), copula_(copula), settings_(settings), d_(marginals.size()) {}
 
-  // Inputs from normal scores: X_i = F_i^-1(Phi(Z_i)), Phi kept inside the open unit interval.
+  // Inputs from normal scores: X_i = F_i^-1(Phi(Z_i)), Phi kept inside the open unit interval;
+  // column by column, as the laws transform batches.
   Eigen::MatrixXd inputs_of(const Eigen::MatrixXd& z) const {
     Eigen::MatrixXd x(z.rows(), z.cols());
-    for (Eigen::Index s = 0; s < z.rows(); ++s) {
-      for (Eigen::Index i = 0; i < z.cols(); ++i) {
-        const double u = std::clamp(gsl_cdf_ugaussian_P(z(s, i)), 0x1p-60, 1.0 - 0x1p-53);
-        x(s, i) = marginals_[static_cast<std::size_t>(i)](u);
+    std::vector<double> u(static_cast<std::size_t>(z.rows()));
+    for (Eigen::Index i = 0; i < z.cols(); ++i) {
+      for (Eigen::Index s = 0; s < z.rows(); ++s) {
+        u[static_cast<std::size_t>(s)] = std::clamp(0.5 * std::erfc(-z(s, i) * M_SQRT1_2), 0x1p-60, 1.0 - 0x1p-53);
       }
+      marginals_[static_cast<std::size_t>(i)](u, std::span<double>(x.col(i).data(), u.size()));
     }
     return x;
+  }
+
+  // `count` standard normal draws from `stream` (uniforms in (0, 1), then Phi^-1 as a batch).
+  static std::vector<double> normal_draws(RandomStream& stream, std::size_t count) {
+    std::vector<double> u(count), z(count);
+    for (double& value : u) value = stream.uniform_open();
+    standard_normal_quantiles(u, z);
+    return z;
   }
 
   Eigen::MatrixXd evaluate(const Eigen::MatrixXd& z) {
@@ -90,9 +100,10 @@ class Sampler {
   Eigen::MatrixXd section_variances() {
     RandomStream stream(derive_key(settings_.key, "variance"));
     const Eigen::MatrixXd factor = Eigen::LLT<Eigen::MatrixXd>(copula_).matrixL();
+    const std::vector<double> draws = normal_draws(stream, settings_.variance_samples * d_);
     Eigen::MatrixXd e(settings_.variance_samples, d_);
     for (Eigen::Index s = 0; s < e.rows(); ++s) {
-      for (Eigen::Index i = 0; i < e.cols(); ++i) e(s, i) = standard_normal_quantile(stream.uniform_open());
+      for (Eigen::Index i = 0; i < e.cols(); ++i) e(s, i) = draws[static_cast<std::size_t>(s) * d_ + static_cast<std::size_t>(i)];
     }
     const Eigen::MatrixXd y = evaluate(e * factor.transpose());
     const std::size_t k = settings_.sections;
@@ -124,12 +135,15 @@ class Sampler {
     RandomStream stream(key);
     Eigen::MatrixXd z(outer * inner, d_);
     Eigen::VectorXd e_fixed(c.fixed.size()), e_varied(c.varied.size());
+    // Per outer draw: its fixed inputs' draws, then each inner draw's varied ones.
+    const std::vector<double> draws = normal_draws(stream, outer * (c.fixed.size() + inner * c.varied.size()));
+    std::size_t next = 0;
     for (std::size_t l = 0; l < outer; ++l) {
-      for (Eigen::Index f = 0; f < e_fixed.size(); ++f) e_fixed(f) = standard_normal_quantile(stream.uniform_open());
+      for (Eigen::Index f = 0; f < e_fixed.size(); ++f) e_fixed(f) = draws[next++];
       const Eigen::VectorXd z_fixed = c.fixed_factor * e_fixed;
       const Eigen::VectorXd mean = c.gain * z_fixed;
       for (std::size_t h = 0; h < inner; ++h) {
-        for (Eigen::Index v = 0; v < e_varied.size(); ++v) e_varied(v) = standard_normal_quantile(stream.uniform_open());
+        for (Eigen::Index v = 0; v < e_varied.size(); ++v) e_varied(v) = draws[next++];
         const Eigen::VectorXd z_varied = mean + c.varied_factor * e_varied;
         const auto row = static_cast<Eigen::Index>(l * inner + h);
         for (std::size_t f = 0; f < c.fixed.size(); ++f) z(row, c.fixed[f]) = z_fixed(static_cast<Eigen::Index>(f));

@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
@@ -27,7 +28,10 @@ std::vector<Quantile> normal_marginals(const Eigen::MatrixXd& sigma) {
   std::vector<Quantile> marginals;
   for (Eigen::Index i = 0; i < sigma.rows(); ++i) {
     const double sd = std::sqrt(sigma(i, i));
-    marginals.push_back([sd](double u) { return sd * standard_normal_quantile(u); });
+    marginals.push_back([sd](std::span<const double> u, std::span<double> x) {
+      standard_normal_quantiles(u, x);
+      for (double& value : x) value *= sd;
+    });
   }
   return marginals;
 }

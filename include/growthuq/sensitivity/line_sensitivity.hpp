@@ -22,10 +22,12 @@ struct LineSensitivity {
   std::size_t samples_used = 0;
   std::size_t sections = 0;  // K of the interval (S2b)
   // Why something is missing, one sentence each: a column left out (not finite over the samples
-  // used, or constant), or no indices at all (too few samples with status ok).
+  // used, or constant), no indices at all (too few samples with status ok), or an output whose
+  // variance its 1 % most extreme samples hold for the most part (the indices are then unstable).
   std::vector<std::string> notes;
 };
 
+// Over the first 100,000 samples with status ok at most (a note says so when there are more).
 // Sections of the interval: 20, or fewer for a small line so that each holds >= 10 samples.
 // Below 30 samples with status ok (3 sections of 10) there are no indices, and a note says so.
 LineSensitivity line_sensitivity(const LineResult& result, std::uint64_t seed);

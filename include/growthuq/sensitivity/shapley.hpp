@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
@@ -18,8 +19,9 @@ namespace growthuq {
 // The model: rows of `inputs` (samples x d, in the inputs' own units) to outputs (samples x m).
 // A non-finite output marks a sample the model could not evaluate.
 using BatchModel = std::function<Eigen::MatrixXd(const Eigen::MatrixXd& inputs)>;
-// The quantile function F_i^-1 of one input's marginal law, u in (0, 1).
-using Quantile = std::function<double(double)>;
+// The quantile function F_i^-1 of one input's marginal law, applied to every u in (0, 1) of the
+// first span into the second (of equal size): batches, as the engine's laws transform columns.
+using Quantile = std::function<void(std::span<const double> u, std::span<double> x)>;
 
 struct ShapleySettings {
   std::size_t variance_samples = 1000;  // N_v: draws of the joint law for Var(Y)
