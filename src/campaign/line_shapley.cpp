@@ -102,6 +102,33 @@ LineShapley line_shapley(const PreparedCampaign& campaign, const LineResult& res
   return shapley;
 }
 
+std::size_t shapley_model_runs(std::size_t inputs, const ShapleySettings& cost) {
+  if (inputs < 2) return 0;
+  const std::size_t group = cost.outer * cost.inner;
+  if (inputs <= 6) return cost.variance_samples + ((std::size_t{1} << inputs) - 2) * group;
+  return cost.variance_samples + cost.permutations * (inputs - 1) * group;
+}
+
+std::string describe_shapley_cost(const PreparedCampaign& campaign) {
+  const SensitivitySettings settings = sensitivity_settings(campaign.campaign());
+  if (!settings.shapley) return {};
+  std::string text = "sensitivity: Shapley effects by new model runs per line:";
+  std::size_t total = 0;
+  for (const PreparedLine& line : campaign.lines()) {
+    const std::size_t d = line.design_variables.variables.size();
+    const bool refused = campaign.campaign().fidelity_of(line.campaign_line) == Fidelity::shell_fe;
+    const std::size_t runs = refused ? 0 : shapley_model_runs(d, settings.cost);
+    total += runs;
+    text += " " + line.campaign_line.name + " " + (refused ? std::string("none (shell_fe)") : std::to_string(runs) + " (" + std::to_string(d) + " inputs)") + ",";
+  }
+  text.back() = ';';
+  const double ratio = static_cast<double>(total) /
+                       static_cast<double>(campaign.campaign().samples * std::max<std::size_t>(campaign.lines().size(), 1));
+  char times[32];
+  std::snprintf(times, sizeof times, "%.1f", ratio);
+  return text + " " + times + " times the run's own samples\n";
+}
+
 std::string format_line_shapley(const LineShapley& shapley) {
   if (!shapley.computed) return "  note: " + shapley.note + "\n";
   const ShapleyEffects& e = shapley.effects;

@@ -29,6 +29,14 @@ struct LineShapley {
 // `result` gives the line's name, columns and rank correlation target.
 LineShapley line_shapley(const PreparedCampaign& campaign, const LineResult& result, const SensitivitySettings& settings);
 
+// The model runs the Shapley effects take per line (Eq. (S3) cost, src/sensitivity/README.md):
+// N_v + (2^d - 2) N_o N_i with exact permutations (d <= 6 inputs), N_v + m (d - 1) N_o N_i beyond.
+std::size_t shapley_model_runs(std::size_t inputs, const ShapleySettings& cost);
+
+// For `growthuq check`: one line per campaign, the runs per line and their ratio to the run's own
+// samples, or nothing when the campaign does not ask for Shapley effects.
+std::string describe_shapley_cost(const PreparedCampaign& campaign);
+
 // The shares as a table (inputs as rows, outputs as columns, "share [low, high]"), the model runs
 // and the copula assumption; or the note. Ends with a newline.
 std::string format_line_shapley(const LineShapley& shapley);
