@@ -201,6 +201,10 @@ class OutputObserver final : public RunObserver {
       shapley_.push_back(line_shapley(campaign_, result, sensitivity_settings_));
       line_reports_ += format_line_shapley(shapley_.back());
     }
+    if (sensitivity_settings_.sobol) {
+      sobol_.push_back(line_sobol(campaign_, result, sensitivity_settings_));
+      line_reports_ += format_line_sobol(sobol_.back());
+    }
     wait_for_writer();
     writer_ = std::thread([this, line = std::move(result), written = std::move(statistics)] {
       use_every_processor();
@@ -221,7 +225,7 @@ class OutputObserver final : public RunObserver {
     add_data_intervals(summaries_, uncertainty.rows);
     if (h5_) h5_->replace_summaries(summaries_);
     write_file_atomically(in_directory(staging_, summary_csv_name), summary_csv_text(summaries_), Overwrite::allow);
-    write_sensitivity(sensitivity_in_campaign_order(), shapley_, h5_ ? &*h5_ : nullptr, staging_);
+    write_sensitivity(sensitivity_in_campaign_order(), shapley_, sobol_, h5_ ? &*h5_ : nullptr, staging_);
     const std::string raw_data_report =
         write_raw_data_outputs(campaign_, summaries_, std::move(uncertainty), h5_ ? &*h5_ : nullptr, staging_);
     if (h5_) {
@@ -293,6 +297,7 @@ class OutputObserver final : public RunObserver {
   std::vector<LineSensitivity> sensitivity_;
   SensitivitySettings sensitivity_settings_ = sensitivity_settings(campaign_.campaign());
   std::vector<LineShapley> shapley_;
+  std::vector<LineSobol> sobol_;
   std::string line_reports_;
   std::thread writer_;
   std::exception_ptr failure_;

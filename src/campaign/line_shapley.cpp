@@ -5,9 +5,8 @@
 #include <cstdio>
 #include <limits>
 
-#include "campaign/chunk_values.hpp"
+#include "campaign/line_model.hpp"
 #include "growthuq/correlation/rank_correlation_target.hpp"
-#include "growthuq/distributions/distribution.hpp"
 #include "growthuq/sampling/random_stream.hpp"
 
 namespace growthuq {
@@ -47,15 +46,13 @@ Eigen::MatrixXd copula_of(const LineResult& result, const std::vector<std::strin
 LineShapley line_shapley(const PreparedCampaign& campaign, const LineResult& result, const SensitivitySettings& settings) {
   LineShapley shapley;
   shapley.line = result.name;
-  const auto line = std::find_if(campaign.lines().begin(), campaign.lines().end(),
-                                 [&](const PreparedLine& l) { return l.campaign_line.name == result.name; });
-  if (line == campaign.lines().end()) throw std::logic_error("line_shapley: no prepared line " + result.name);
-  const auto& variables = line->design_variables.variables;
+  const PreparedLine& line = prepared_line(campaign, result.name);
+  const auto& variables = line.design_variables.variables;
   for (const LineVariable& variable : variables) shapley.inputs.push_back(column_name(variable.name, *variable.unit));
   for (const ResultColumn& column : result.columns) {
     if (!column.is_input) shapley.outputs.push_back(column.column_name());
   }
-  if (campaign.campaign().fidelity_of(line->campaign_line) == Fidelity::shell_fe) {
+  if (campaign.campaign().fidelity_of(line.campaign_line) == Fidelity::shell_fe) {
     shapley.note = "no Shapley effects: fidelity shell_fe would take a finite-element solve per model run; run the line "
                    "with fidelity = corrected for them";
     return shapley;
@@ -64,40 +61,11 @@ LineShapley line_shapley(const PreparedCampaign& campaign, const LineResult& res
     shapley.note = "no Shapley effects: they need two inputs or more and an output";
     return shapley;
   }
-  std::vector<Quantile> marginals;
   std::vector<std::string> names;
-  for (const LineVariable& variable : variables) {
-    marginals.push_back([&distribution = variable.distribution](std::span<const double> u, std::span<double> x) {
-      quantiles(distribution, u, x);
-    });
-    names.push_back(variable.name);
-  }
-  const std::size_t outputs = campaign.computed_outputs().size();
-  // The line's models on rows of inputs (line-file units), as the run evaluates a chunk.
-  const BatchModel model = [&](const Eigen::MatrixXd& x) {
-    const auto n = static_cast<std::size_t>(x.rows());
-    LineDesign design;
-    design.names = names;
-    for (Eigen::Index j = 0; j < x.cols(); ++j) {
-      LargeVector<double> column(n);
-      for (std::size_t s = 0; s < n; ++s) column[s] = x(static_cast<Eigen::Index>(s), j);
-      design.values.push_back(std::move(column));
-    }
-    const std::vector<double> packed = campaign.evaluate_chunk(*line, design, {0, n});
-    const ChunkValues values(packed, outputs);
-    Eigen::MatrixXd y(x.rows(), static_cast<Eigen::Index>(outputs));
-    for (std::size_t o = 0; o < outputs; ++o) {
-      const std::span<const double> column = values.output(o);
-      for (std::size_t s = 0; s < n; ++s) {
-        y(static_cast<Eigen::Index>(s), static_cast<Eigen::Index>(o)) =
-            values.status(s) == SampleStatus::ok ? column[s] : std::numeric_limits<double>::quiet_NaN();
-      }
-    }
-    return y;
-  };
+  for (const LineVariable& variable : variables) names.push_back(variable.name);
   ShapleySettings cost = settings.cost;
   cost.key = stream_key(campaign.campaign().seed, result.name, "shapley");
-  shapley.effects = shapley_effects(model, marginals, copula_of(result, names), cost);
+  shapley.effects = shapley_effects(line_model(campaign, line), line_marginals(line), copula_of(result, names), cost);
   shapley.computed = true;
   return shapley;
 }

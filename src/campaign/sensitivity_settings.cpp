@@ -10,14 +10,15 @@ namespace growthuq {
 
 SensitivitySettings read_sensitivity_section(const IniDocument& document, const IniSection& section) {
   SensitivitySettings settings;
-  constexpr std::string_view allowed = "method, outer, inner, permutations, variance_samples";
+  constexpr std::string_view allowed = "method, outer, inner, permutations, variance_samples, sobol_samples";
   for (const IniEntry& entry : section.entries) {
     const std::string location = document.location(entry.line);
     if (entry.key == "method") {
-      if (entry.value != "first_order" && entry.value != "shapley") {
-        throw_bad_value(location, entry.key, entry.value, "first_order or shapley");
+      if (entry.value != "first_order" && entry.value != "shapley" && entry.value != "sobol") {
+        throw_bad_value(location, entry.key, entry.value, "first_order, shapley or sobol");
       }
       settings.shapley = entry.value == "shapley";
+      settings.sobol = entry.value == "sobol";
     } else if (entry.key == "outer") {
       // At least one per section of the interval (Eq. (S5)).
       settings.cost.outer = parse_count(entry.value, location, entry.key, settings.cost.sections, 10000000);
@@ -27,6 +28,8 @@ SensitivitySettings read_sensitivity_section(const IniDocument& document, const 
       settings.cost.permutations = parse_count(entry.value, location, entry.key, settings.cost.sections, 10000000);
     } else if (entry.key == "variance_samples") {
       settings.cost.variance_samples = parse_count(entry.value, location, entry.key, 2 * settings.cost.sections, 100000000);
+    } else if (entry.key == "sobol_samples") {
+      settings.sobol_cost.samples = parse_count(entry.value, location, entry.key, 2 * settings.sobol_cost.sections, 100000000);
     } else {
       throw InputError(location, "unknown key '" + entry.key + "' in [sensitivity] (allowed: " + std::string(allowed) + ")");
     }

@@ -162,3 +162,37 @@ TEST_CASE("campaign sensitivity: Shapley shares of turgor against the log-linear
   CHECK(found == 3);
   CHECK(sum == doctest::Approx(1.0).epsilon(1e-12));
 }
+
+TEST_CASE("campaign sensitivity: Sobol indices only for a line of independent inputs, refused otherwise") {
+  // Two lines of one law: wt_free without a rank correlation gets Sobol indices from N (d + 2)
+  // new runs; pme48, with the physics correlation, is refused with one line saying why. Their
+  // accuracy is tested on Ishigami (test_sobol.cpp): this thin-shell line drawn without its
+  // correlation puts d below d0 in many samples (flagged) and its turgor's variance in a few
+  // samples of stretch near 1, so its numbers are no reference for anything.
+  ScratchDirectory scratch("campaign_sobol");
+  const std::string source = GROWTHUQ_SOURCE_DIR;
+  spit(scratch.root / "sobol.ini", "[campaign]\nname = sobol\nseed = 28\nsamples = 1000\noutputs = p\n"
+                                   "output_dir = out\nformats = csv\n\n[instrument]\nprobe_radius_um = 0.25\n"
+                                   "poisson_ratio = 0.2\n\n[physics_correlation]\nsamples = 2000\n\n[sensitivity]\n"
+                                   "method = sobol\nsobol_samples = 2000\n\n[line wt_free]\n"
+                                   "distributions = " + source + "/distributions/pme48.ini\n\n[line pme48]\n"
+                                   "distributions = " + source + "/distributions/pme48.ini\nrank_correlation = physics\n");
+  const CliOutcome run = run_cli("run sobol.ini --quiet", scratch.root);
+  REQUIRE_MESSAGE(run.exit_code == 0, run.err);
+  CHECK(run.out.find("  note: no Sobol indices: the inputs of line 'pme48' are rank-correlated (rank_correlation = physics), "
+                     "and the Saltelli/Jansen estimators assume independent inputs; use [sensitivity] method = shapley\n") !=
+        std::string::npos);
+  CHECK(run.out.find("Sobol first-order indices (Saltelli et al. 2010; independent inputs), 10000 model runs") != std::string::npos);
+  const CsvTable table = read_csv((scratch.root / "out" / "sensitivity.csv").string());
+  std::size_t first = 0, total = 0;
+  for (const auto& row : table.rows) {
+    CHECK_FALSE((row[0] == "pme48" && row[3].starts_with("sobol")));
+    if (row[0] == "wt_free" && row[3] == "sobol_first") ++first;
+    if (row[0] == "wt_free" && row[3] == "sobol_total") {
+      ++total;
+      CHECK(row[7] == "10000");  // N (d + 2) = 2000 x 5 runs for k, d, d0
+    }
+  }
+  CHECK(first == 3);
+  CHECK(total == 3);
+}
