@@ -1,6 +1,7 @@
 #include "growthuq/sensitivity/shapley.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numeric>
