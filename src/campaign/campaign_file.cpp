@@ -8,6 +8,7 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
+#include "campaign/sensitivity_settings.hpp"
 #include "io/ini.hpp"
 #include "io/read_text_file.hpp"
 
@@ -346,13 +347,15 @@ Campaign parse_campaign(const std::string& text, const std::string& path) {
       read_data_uncertainty_section(document, section, campaign);
     } else if (section.name == "shell_fe") {
       read_shell_fe_section(document, section, campaign);
+    } else if (section.name == "sensitivity") {
+      read_sensitivity_section(document, section);  // checked now, read again by the run (sensitivity_settings.hpp)
     } else if (section.name.starts_with("line ")) {
       campaign.lines.push_back(read_line_section(document, section));
     } else {
       throw InputError(document.location(section.line),
                        "unknown section [" + section.name +
                            "] (expected [campaign], [instrument], [growth], [physics_correlation], [data_uncertainty], "
-                           "[shell_fe] or [line NAME])");
+                           "[shell_fe], [sensitivity] or [line NAME])");
     }
   }
   if (!has_campaign) throw InputError(path, "no [campaign] section (name, seed, samples, outputs, output_dir)");

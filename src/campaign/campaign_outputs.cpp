@@ -23,11 +23,14 @@
 #include "growthuq/campaign/data_uncertainty.hpp"
 #include "campaign/line_comparison_outputs.hpp"
 #include "campaign/raw_data_outputs.hpp"
+#include "campaign/sensitivity_outputs.hpp"
+#include "campaign/sensitivity_settings.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/printable.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
 #include "growthuq/io/results_h5.hpp"
+#include "growthuq/sensitivity/line_sensitivity.hpp"
 #include "growthuq/stats/line_analysis.hpp"
 #include "growthuq/stats/quantity_summary.hpp"
 
@@ -58,8 +61,9 @@ std::string shell_word(const std::string& path) {
 
 // The result files of a run, in the order the commit moves them into the output directory:
 // summary.csv last, so a directory with a summary.csv holds the whole set.
-constexpr std::array<const char*, 6> result_names{results_h5_name,      samples_csv_name, data_uncertainty_csv_name,
-                                                  comparisons_csv_name, letters_csv_name, summary_csv_name};
+constexpr std::array<const char*, 7> result_names{results_h5_name,  samples_csv_name,     data_uncertainty_csv_name,
+                                                  comparisons_csv_name, letters_csv_name, sensitivity_csv_name,
+                                                  summary_csv_name};
 
 // Where a run writes its results until they are all complete (output_dir/staging).
 std::string staging_directory(const std::string& output_dir) { return in_directory(output_dir, staging_name); }
@@ -186,8 +190,21 @@ class OutputObserver final : public RunObserver {
     progress_.line_finished();
     for (const std::string& warning : warnings) log_ << printable("growthuq run: line '" + result.name + "': " + warning) << "\n";
     summaries_.insert(summaries_.end(), statistics.summaries.begin(), statistics.summaries.end());
+    // The sensitivity indices from the line's own samples (one sort per input; Eq. (S1),
+    // src/sensitivity/README.md), on the coordinator before the line goes to the writer.
+    sensitivity_.push_back(line_sensitivity(result, campaign_.campaign().seed));
     line_reports_ += "\nline " + result.name + ": input rank correlation (Spearman)\n" + format_input_correlation(result) +
-                     format_line_analysis(statistics.analysis);
+                     format_line_analysis(statistics.analysis) + format_line_sensitivity(sensitivity_.back());
+    // The Shapley effects, when the campaign asks for them: new runs of the line's models, on
+    // this process alone (src/campaign/line_shapley.hpp).
+    if (sensitivity_settings_.shapley) {
+      shapley_.push_back(line_shapley(campaign_, result, sensitivity_settings_));
+      line_reports_ += format_line_shapley(shapley_.back());
+    }
+    if (sensitivity_settings_.sobol) {
+      sobol_.push_back(line_sobol(campaign_, result, sensitivity_settings_));
+      line_reports_ += format_line_sobol(sobol_.back());
+    }
     wait_for_writer();
     writer_ = std::thread([this, line = std::move(result), written = std::move(statistics)] {
       use_every_processor();
@@ -208,6 +225,7 @@ class OutputObserver final : public RunObserver {
     add_data_intervals(summaries_, uncertainty.rows);
     if (h5_) h5_->replace_summaries(summaries_);
     write_file_atomically(in_directory(staging_, summary_csv_name), summary_csv_text(summaries_), Overwrite::allow);
+    write_sensitivity(sensitivity_in_campaign_order(), shapley_, sobol_, h5_ ? &*h5_ : nullptr, staging_);
     const std::string raw_data_report =
         write_raw_data_outputs(campaign_, summaries_, std::move(uncertainty), h5_ ? &*h5_ : nullptr, staging_);
     if (h5_) {
@@ -258,6 +276,17 @@ class OutputObserver final : public RunObserver {
     if (failure_) std::rethrow_exception(std::exchange(failure_, nullptr));
   }
 
+  // The lines' sensitivity in the campaign's order (the lines run with the reference line first).
+  std::vector<LineSensitivity> sensitivity_in_campaign_order() const {
+    std::vector<LineSensitivity> ordered;
+    for (const CampaignLine& line : campaign_.campaign().lines) {
+      for (const LineSensitivity& s : sensitivity_) {
+        if (s.line == line.name) ordered.push_back(s);
+      }
+    }
+    return ordered;
+  }
+
   const PreparedCampaign& campaign_;
   std::ostream& log_;
   std::string staging_ = staging_directory(campaign_.campaign().output_dir);
@@ -265,6 +294,10 @@ class OutputObserver final : public RunObserver {
   std::optional<SamplesCsvWriter> samples_;
   std::optional<ResultsH5Writer> h5_;
   std::vector<QuantitySummary> summaries_;
+  std::vector<LineSensitivity> sensitivity_;
+  SensitivitySettings sensitivity_settings_ = sensitivity_settings(campaign_.campaign());
+  std::vector<LineShapley> shapley_;
+  std::vector<LineSobol> sobol_;
   std::string line_reports_;
   std::thread writer_;
   std::exception_ptr failure_;

@@ -10,6 +10,7 @@
 
 #include "campaign/campaign_outputs.hpp"
 #include "campaign/run_footprint.hpp"
+#include "campaign/line_shapley.hpp"
 #include "campaign/run_time_estimate.hpp"
 #include "campaign_flags.hpp"
 #include "commands.hpp"
@@ -84,7 +85,7 @@ void print_plan(const PreparedCampaign& prepared, const RunFootprint& footprint,
   const auto raw_lines = std::count_if(prepared.lines().begin(), prepared.lines().end(),
                                        [](const PreparedLine& line) { return !line.campaign_line.raw_path.empty(); });
   const bool bootstrap = c.data_uncertainty.replicates > 0;
-  std::cout << "\nresults in " << c.output_dir << ": summary.csv" << (c.formats.csv ? ", samples.csv" : "")
+  std::cout << "\nresults in " << c.output_dir << ": summary.csv, sensitivity.csv" << (c.formats.csv ? ", samples.csv" : "")
             << (c.formats.hdf5 ? ", results.h5" : "") << (bootstrap ? ", data_uncertainty.csv" : "")
             << (bootstrap && raw_lines >= 2 ? ", comparisons.csv, letters.csv" : "") << "\n"
             << "estimated peak memory " << readable_size(footprint.memory_bytes) << " for one process ("
@@ -93,7 +94,7 @@ void print_plan(const PreparedCampaign& prepared, const RunFootprint& footprint,
             << (room.disk_bytes ? readable_size(*room.disk_bytes) + " free there" : std::string("free space unknown")) << ")\n"
             << (shell_fe_time ? describe_shell_fe_time(*shell_fe_time, 1)
                               : "time: not estimated (growthuq tradeoff " + c.path + " measures it for sample counts you choose)\n")
-            << data_uncertainty_plan(c) << "checked: nothing was sampled or written\n";
+            << data_uncertainty_plan(c) << describe_shapley_cost(prepared) << "checked: nothing was sampled or written\n";
 }
 
 }  // namespace

@@ -209,7 +209,7 @@ class CommandLine(unittest.TestCase):
         completed = Shared.plot_run
         self.assertEqual(completed.returncode, 0, completed.stderr)
         plots = Shared.results_dir / "plots"
-        stems = ["boxes", "growth_rate", "pca"] + [f"correlogram_{l}" for l in Shared.reference.lines]
+        stems = ["boxes", "growth_rate", "sensitivity"] + [f"correlogram_{l}" for l in Shared.reference.lines]
         for stem in stems:
             for extension, check in (("png", assert_valid_png), ("pdf", assert_valid_pdf)):
                 path = plots / f"{stem}.{extension}"
@@ -230,12 +230,12 @@ class CommandLine(unittest.TestCase):
     def test_refuses_to_overwrite_plots_without_force(self):
         target = self.plots_copy()
         before = {p.name: p.stat().st_mtime_ns for p in (target / "plots").iterdir()}
-        refused = plot_command(target, "--formats", "png", "--figures", "pca")
-        user_error(self, refused, target / "plots" / "pca.png", "--force")
+        refused = plot_command(target, "--formats", "png", "--figures", "sensitivity")
+        user_error(self, refused, target / "plots" / "sensitivity.png", "--force")
         self.assertEqual(before, {p.name: p.stat().st_mtime_ns for p in (target / "plots").iterdir()})
-        forced = plot_command(target, "--formats", "png", "--figures", "pca", "--force")
+        forced = plot_command(target, "--formats", "png", "--figures", "sensitivity", "--force")
         self.assertEqual(forced.returncode, 0, forced.stderr)
-        self.assertGreater((target / "plots" / "pca.png").stat().st_mtime_ns, before["pca.png"])
+        self.assertGreater((target / "plots" / "sensitivity.png").stat().st_mtime_ns, before["sensitivity.png"])
         self.assertFalse(list((target / "plots").glob("*.partial")))
 
     def plots_copy(self):
@@ -243,7 +243,7 @@ class CommandLine(unittest.TestCase):
         if not target.exists():
             target.mkdir()
             shutil.copy(Shared.results_dir / "results.h5", target)
-            self.assertEqual(plot_command(target, "--formats", "png", "--figures", "pca").returncode, 0)
+            self.assertEqual(plot_command(target, "--formats", "png", "--figures", "sensitivity").returncode, 0)
         return target
 
     def test_bad_input_is_one_line_naming_the_file_and_what_was_expected(self):
@@ -641,6 +641,20 @@ class PrincipalComponents(unittest.TestCase):
         self.assertEqual(len(figure.axes), len(Shared.reference.lines))
 
 
+class Sensitivity(unittest.TestCase):
+
+    def test_bars_and_intervals_are_the_stored_indices(self):
+        figure = PLOTTING.sensitivity.sensitivity_figure(Shared.results)
+        with h5py.File(Shared.results_dir / "results.h5") as h5:
+            table = h5["sensitivity"][()]
+        self.assertGreater(len(table), 0)
+        for row in table:
+            line, output, input_ = (as_text(row[name]) for name in ("line", "output", "input"))
+            bar = one(figure, f"{line}/{output}/{input_}")
+            self.assertTrue(close([bar.get_width()], [row["index"]]))
+        self.assertEqual(len(figure.axes), len(Shared.reference.lines))
+
+
 # ---------------------------------------------------------------- FIXTURES: relaxation and trade
 
 def relaxation_curve(t, einf, tau_fast, tau_slow, force_uN=5.0):
@@ -821,6 +835,7 @@ if __name__ == "__main__":
     import plotting.pca
     import plotting.relaxation
     import plotting.results
+    import plotting.sensitivity
     import plotting.tradeoff
     import plotting.tradeoff_data
     PLOTTING = plotting

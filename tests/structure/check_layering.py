@@ -16,7 +16,7 @@ import tempfile
 # sampling), the models (mechanics, fe, relaxation, growth), what is built from them (rawdata,
 # synthetic), where evaluation runs (pool), the campaign, and the command line on top.
 CONCEPT_ORDER = [
-    "core", "evaluation", "stats", "io", "distributions", "correlation", "sampling",
+    "core", "evaluation", "stats", "io", "distributions", "correlation", "sampling", "sensitivity",
     "mechanics", "fe", "correction", "relaxation", "growth", "rawdata", "synthetic", "pool", "campaign", "cli",
 ]
 

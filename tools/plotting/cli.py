@@ -11,7 +11,10 @@ from .errors import FigureSkipped, PlotInputError
 from .results import read_results
 
 FORMATS = ("png", "pdf")
-FIGURES = ("boxes", "growth_rate", "correlogram", "pca", "relaxation", "tradeoff")
+FIGURES = ("boxes", "growth_rate", "correlogram", "sensitivity", "pca", "relaxation", "tradeoff")
+# Drawn unless --figures names them: the PCA's scree plot says nothing of which input drives an
+# output, which the sensitivity figure shows (issue 28); it stays available by name.
+ON_REQUEST = ("pca",)
 
 
 def _file_stem(text):
@@ -27,6 +30,7 @@ def _builders(results, results_dir, notes):
     from .growth_rate import growth_rate_figure
     from .pca import pca_figure
     from .relaxation import relaxation_figure
+    from .sensitivity import sensitivity_figure
     from .tradeoff import tradeoff_figure
     from .tradeoff_data import read_tradeoff
 
@@ -52,6 +56,7 @@ def _builders(results, results_dir, notes):
         "boxes": lambda: [("boxes", box_figure(results))],
         "growth_rate": lambda: [("growth_rate", growth_rate_figure(results))],
         "correlogram": correlograms,
+        "sensitivity": lambda: [("sensitivity", sensitivity_figure(results))],
         "pca": lambda: [("pca", pca_figure(results))],
         "relaxation": lambda: [("relaxation", relaxation_figure(results))],
         "tradeoff": trade,
@@ -98,14 +103,16 @@ def parse_arguments(argv):
     parser = argparse.ArgumentParser(
         prog="tools/plot",
         description="Figures of a growthuq campaign: box plots per line, predicted vs measured "
-                    "growth rate, correlograms, PCA, relaxation fits, the speed/accuracy trade.")
+                    "growth rate, correlograms, first-order sensitivity, PCA, relaxation fits, the "
+                    "speed/accuracy trade.")
     parser.add_argument("results_dir", metavar="RESULTS_DIR", type=Path,
                         help="output directory of `growthuq run` (holds results.h5)")
     parser.add_argument("--out", type=Path, help="where the plots go (default RESULTS_DIR/plots)")
     parser.add_argument("--formats", default="png,pdf", help="png, pdf or both (default png,pdf)",
                         type=lambda text: _list_option(text, FORMATS))
-    parser.add_argument("--figures", default=",".join(FIGURES),
-                        help=f"which figures (default all: {','.join(FIGURES)})",
+    default_figures = ",".join(f for f in FIGURES if f not in ON_REQUEST)
+    parser.add_argument("--figures", default=default_figures,
+                        help=f"which figures (default {default_figures}; also {','.join(ON_REQUEST)})",
                         type=lambda text: _list_option(text, FIGURES))
     parser.add_argument("--force", action="store_true", help="replace existing plots")
     return parser.parse_args(argv)

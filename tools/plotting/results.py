@@ -13,7 +13,7 @@ import h5py
 import numpy as np
 
 from .errors import PlotInputError
-from .h5text import text_attribute, text_list
+from .h5text import as_text, text_attribute, text_list
 from .letters import read_letters
 from .relaxation_data import read_relaxation
 
@@ -71,6 +71,9 @@ class Results:
     samples_per_line: int
     lines: list = field(default_factory=list)
     letters: dict = field(default_factory=dict)  # {(line, quantity): compact letters}, letters.py
+    # First-order sensitivity indices (results.h5 /sensitivity, src/sensitivity/README.md):
+    # {line: [(output, input, index, ci_low, ci_high)]} in the table's order.
+    sensitivity: dict = field(default_factory=dict)
 
     def line_names(self):
         return [line.name for line in self.lines]
@@ -188,6 +191,18 @@ def _tubes(group):
     return (min(counts), max(counts)) if counts else None
 
 
+def _read_sensitivity(h5):
+    if "sensitivity" not in h5:
+        return {}
+    table = h5["sensitivity"][()]
+    rows = {}
+    for line, output, input_, index, low, high in zip(table["line"], table["output"], table["input"], table["index"],
+                                                      table["ci_low"], table["ci_high"]):
+        rows.setdefault(as_text(line), []).append((as_text(output), as_text(input_), float(index), float(low),
+                                                   float(high)))
+    return rows
+
+
 def read_results(path):
     """The results of `growthuq run` at `path` (a results.h5). Raises PlotInputError naming the
     file and what was expected when it is missing, not HDF5 or not growthuq's layout."""
@@ -211,6 +226,7 @@ def read_results(path):
         for name in _line_order(h5):
             results.lines.append(_read_line(h5, name, path))
         results.letters = read_letters(h5, path)
+        results.sensitivity = _read_sensitivity(h5)
     if not results.lines:
         raise PlotInputError(f"{path}:/lines: no line groups (expected one group per plant line)")
     return results

@@ -34,6 +34,10 @@ class Results:
     data_uncertainty: pd.DataFrame = field(default_factory=pd.DataFrame)  # the rows of data_uncertainty.csv, campaign order
     comparisons: pd.DataFrame = field(default_factory=pd.DataFrame)  # the rows of comparisons.csv (line_a / line_b)
     letters: pd.DataFrame = field(default_factory=pd.DataFrame)      # the rows of letters.csv (quantity, line, letters)
+    # The first-order sensitivity indices (src/sensitivity/README.md): the rows of sensitivity.csv
+    # (line, output, input, method, index, ci_low, ci_high, samples_used, sections); empty when
+    # no line had enough samples with status ok.
+    sensitivity: pd.DataFrame = field(default_factory=pd.DataFrame)
     attrs: dict = field(default_factory=dict)  # root attributes: seed, kappa, samples_per_line, campaign_text, ...
     report: str = ""            # stdout of the run, when the results come from growthuq.run
 
@@ -92,7 +96,7 @@ def _line_tables(h5, lines, name):
 
 
 def _root_table(h5, name, lines, line_columns):
-    """The root table `name` (data_uncertainty, line_comparisons, line_letters) with its line
+    """The root table `name` (data_uncertainty, line_comparisons, line_letters, sensitivity) with its line
     columns as ordered categoricals of the campaign's order, rows as stored; an empty frame when
     the run wrote none."""
     if name not in h5:
@@ -196,7 +200,9 @@ def load(results):
             data_uncertainty = _in_line_order(data_uncertainty, lines)
         comparisons = _root_table(h5, "line_comparisons", lines, ["line_a", "line_b"])
         letters = _root_table(h5, "line_letters", lines, ["line"])
+        sensitivity = _root_table(h5, "sensitivity", lines, ["line"])
     dataset = _combined([_line_dataset(path, line) for line in lines], lines)
     dataset.attrs = {name: value for name, value in attrs.items() if not isinstance(value, list)}
     return Results(path, lines, _samples_frame(dataset, lines), summary, correlations, fits, fit_parameters,
-                   dataset, data_uncertainty=data_uncertainty, comparisons=comparisons, letters=letters, attrs=attrs)
+                   dataset, data_uncertainty=data_uncertainty, comparisons=comparisons, letters=letters,
+                   sensitivity=sensitivity, attrs=attrs)

@@ -182,6 +182,12 @@ class RunAndLoad(unittest.TestCase):
         self.assertTrue(self.results.comparisons.empty)  # one line given by raw data: nothing to compare
         self.assertTrue(self.results.letters.empty)
 
+    def test_sensitivity_is_sensitivity_csv(self):
+        read = pd.read_csv(self.out / "sensitivity.csv", float_precision="round_trip")
+        self.assertEqual(len(read), len(self.results.sensitivity))
+        self.assertGreater(len(read), 0)
+        assert_frame_is_csv(self, self.results.sensitivity, read)
+
     def test_fits_as_numbers(self):
         fits, parameters = self.results.fits, self.results.fit_parameters
         self.assertEqual(set(fits["line"]), {"xxt1_xxt2"})
