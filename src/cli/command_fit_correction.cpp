@@ -148,12 +148,13 @@ int run_fit_correction(const Arguments& arguments) {
             << " within 2 % in p and E; larger of the two errors rms "
             << percent(cv.predictions ? std::sqrt(cv.sum_squares / cv.predictions) : 0.0) << ", largest " << percent(cv.largest)
             << "\n";
-  write_file_atomically(out, correction_source(correction), overwrite);
+  // The coefficients and their error table commit together or not at all.
+  std::vector<FileContent> results;
+  if (!errors.empty()) results.push_back({errors, errors_table(points, correction)});
+  results.push_back({out, correction_source(correction)});
+  write_files_together(results, overwrite);
   std::cout << "wrote " << out << " (" << correction.training_points << " fitted rows)\n";
-  if (!errors.empty()) {
-    write_file_atomically(errors, errors_table(points, correction), overwrite);
-    std::cout << "wrote " << errors << "\n";
-  }
+  if (!errors.empty()) std::cout << "wrote " << errors << "\n";
   return 0;
 }
 

@@ -1,0 +1,275 @@
+// The guarantees of README's "What a run guarantees", end to end through the CLI: a run refused
+// by the lock touches nothing; a full disk during results.h5 gives one line and no crash, and
+// keeps the old results and the checkpoint; option abbreviations are errors; every output path
+// is checked before the work; a command's outputs commit together or not at all.
+#include <doctest/doctest.h>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "support/cli_run.hpp"
+#include "support/scratch_directory.hpp"
+#include "support/small_disk.hpp"
+#include "support/special_files.hpp"
+#include "support/text_file.hpp"
+
+using namespace growthuq::testing;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string source = GROWTHUQ_SOURCE_DIR;
+const std::string small_campaign = source + "/tests/campaign/data/small_campaign.ini";
+
+// Every file under `directory` (relative path -> content; folders as "<dir>"): what a refused
+// run must leave exactly as it was.
+std::map<std::string, std::string> snapshot(const fs::path& directory) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(directory)) {
+    const std::string name = fs::relative(entry.path(), directory).string();
+    files[name] = entry.is_directory() ? "<dir>" : slurp(entry.path());
+  }
+  return files;
+}
+
+// A lock on DIR/run.lock as another live run holds it (an exclusive flock of this process).
+struct ForeignLock {
+  int descriptor;
+  explicit ForeignLock(const fs::path& directory) {
+    descriptor = ::open((directory / "run.lock").c_str(), O_RDWR | O_CREAT, 0644);
+    REQUIRE(descriptor >= 0);
+    REQUIRE(::flock(descriptor, LOCK_EX | LOCK_NB) == 0);
+    const std::string record = "pid 4242 on host elsewhere\n";
+    REQUIRE(::ftruncate(descriptor, 0) == 0);
+    REQUIRE(::pwrite(descriptor, record.data(), record.size(), 0) == static_cast<ssize_t>(record.size()));
+  }
+  ~ForeignLock() { ::close(descriptor); }
+  ForeignLock(const ForeignLock&) = delete;
+  ForeignLock& operator=(const ForeignLock&) = delete;
+};
+
+std::size_t lines_in(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+TEST_CASE("a run refused by the lock touches nothing: the live run's staging, checkpoint and lock stay as they were") {
+  const ScratchDirectory scratch("refused_touches_nothing");
+  const fs::path out = scratch.root / "out";
+  // A real interrupted run's checkpoint (SIGTERM once chunks are kept).
+  const pid_t pid = start(cli({"run", small_campaign, "--samples", "400000", "--quiet", "--out", "out"}), scratch.root);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  std::error_code error;
+  while (!(fs::file_size(out / "checkpoint" / "chunks.bin", error) > 1000 && !error)) {
+    int status = 0;
+    REQUIRE_MESSAGE(::waitpid(pid, &status, WNOHANG) == 0, "the run ended before it could be stopped");
+    REQUIRE(std::chrono::steady_clock::now() < deadline);
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ::kill(pid, SIGTERM);
+  const CliOutcome stopped = outcome_in(scratch.root, wait_for(pid));
+  REQUIRE_MESSAGE(stopped.exit_code == 143, stopped.err);
+  // What the live run has staged and its lock.
+  fs::create_directories(out / "staging");
+  spit(out / "staging" / "samples.csv.partial", "the live run's rows\n");
+  const ForeignLock live(out);
+  const std::map<std::string, std::string> before = snapshot(out);
+  REQUIRE(before.count("staging/samples.csv.partial") == 1);
+  REQUIRE(before.count("checkpoint/chunks.bin") == 1);
+
+  const std::string in_use = "growthuq run: error: out: is in use by another growthuq run (pid 4242 on host elsewhere, "
+                             "lock file out/run.lock): wait for it to end or stop it; two runs in one output directory "
+                             "would mix their files\n";
+  for (const std::vector<std::string>& arguments :
+       {std::vector<std::string>{"run", small_campaign, "--quiet", "--out", "out"},
+        std::vector<std::string>{"run", small_campaign, "--quiet", "--out", "out", "--force"},
+        std::vector<std::string>{"run", "--resume", "out", "--quiet"},
+        std::vector<std::string>{"check", small_campaign, "--out", "out", "--force"}}) {
+    CAPTURE(arguments[1]);
+    CAPTURE(arguments.back());
+    const CliOutcome refused = run_in(scratch.root, cli(arguments));
+    CHECK(refused.exit_code == 2);
+    CHECK(refused.err == in_use);
+    CHECK(snapshot(out) == before);
+  }
+}
+
+TEST_CASE("a full disk while results.h5 is written: one line, no crash, old results and checkpoint kept, --resume finishes") {
+  const ScratchDirectory scratch("hdf5_full_disk");
+  SmallDisk disk(scratch.root / "disk", 2048);
+  if (!disk.mounted()) {
+    MESSAGE("cannot mount a tmpfs here (needs root): the full disk during the HDF5 write is not checked");
+    return;
+  }
+  const fs::path out = disk.where / "out";
+  const std::vector<std::string> rerun = {"run", small_campaign, "--formats", "hdf5", "--quiet", "--out", "out", "--force"};
+  bool hdf5_failed = false;
+  // The free space left decides which write meets the full disk first: from too little for the
+  // run to start (the up-front room check) to enough for all of it.
+  for (std::uint64_t keep = 56 * 1024; keep <= 160 * 1024 && !hdf5_failed; keep += 8 * 1024) {
+    CAPTURE(keep);
+    fs::remove(disk.where / "filler");
+    fs::remove_all(out);
+    const CliOutcome old = run_in(disk.where, cli({"run", small_campaign, "--formats", "hdf5", "--samples", "100", "--quiet",
+                                                   "--out", "out"}));
+    REQUIRE_MESSAGE(old.exit_code == 0, old.err);
+    const std::string old_h5 = slurp(out / "results.h5");
+    const std::string old_summary = slurp(out / "summary.csv");
+    disk.fill_leaving("filler", keep);
+
+    const CliOutcome run = run_in(disk.where, cli(rerun));
+    CAPTURE(run.err);
+    REQUIRE(run.exit_code != -1);  // never killed by a signal (it was SIGSEGV, exit 139)
+    if (run.exit_code == 0) break;  // room enough: nothing failed
+    CHECK(run.exit_code == 2);
+    CHECK(lines_in(run.err) == 1);
+    CHECK(run.err.starts_with("growthuq run: error: "));
+    CHECK(run.err.find("HDF5-DIAG") == std::string::npos);
+    CHECK(run.err.find("H5") == std::string::npos);
+    // The old results as they were, nothing of the failed run beside them.
+    CHECK(slurp(out / "results.h5") == old_h5);
+    CHECK(slurp(out / "summary.csv") == old_summary);
+    CHECK(!fs::exists(out / "staging"));
+    CHECK(!fs::exists(out / "run.lock"));
+    if (run.err.find("out/staging/results.h5.partial: write failed: No space left on device") == std::string::npos) continue;
+    hdf5_failed = true;
+    CHECK(run.err.ends_with("; the checkpoint keeps the finished chunks: make room, then finish with: growthuq run --resume "
+                            "out\n"));
+    REQUIRE(fs::exists(out / "checkpoint" / "manifest.txt"));
+    fs::remove(disk.where / "filler");
+    const CliOutcome resumed = run_in(disk.where, cli({"run", "--resume", "out", "--quiet"}));
+    CHECK_MESSAGE(resumed.exit_code == 0, resumed.err);
+    CHECK(!fs::exists(out / "checkpoint"));
+    CHECK(slurp(out / "summary.csv") != old_summary);  // the 200-sample run's
+  }
+  CHECK_MESSAGE(hdf5_failed, "no free space tried made the results.h5 write fail");
+}
+
+TEST_CASE("option abbreviations are errors, not another option") {
+  const ScratchDirectory scratch("abbreviations");
+  const CliOutcome run = run_in(scratch.root, cli({"run", small_campaign, "--sam", "10", "--quiet", "--out", "o"}));
+  CHECK(run.exit_code == 2);
+  CHECK(run.err == "growthuq run: error: unrecognised option '--sam' (see growthuq run --help)\n");
+  CHECK(!fs::exists(scratch.root / "o"));
+  // tradeoff has --samples-list, and no --samples: it ran as --samples-list.
+  const CliOutcome tradeoff =
+      run_in(scratch.root, cli({"tradeoff", small_campaign, "--samples", "100,200", "--quiet", "--out", "t.csv"}));
+  CHECK(tradeoff.exit_code == 2);
+  CHECK(tradeoff.err == "growthuq tradeoff: error: unrecognised option '--samples' (see growthuq tradeoff --help)\n");
+  CHECK(!fs::exists(scratch.root / "t.csv"));
+  // The full names and the declared short forms still work.
+  const CliOutcome full = run_in(scratch.root, cli({"run", small_campaign, "--samples", "50", "--quiet", "--out", "o"}));
+  CHECK_MESSAGE(full.exit_code == 0, full.err);
+}
+
+TEST_CASE("every output path is checked before the work") {
+  const ScratchDirectory scratch("outputs_first");
+  const auto refused_at_once = [&](const std::vector<std::string>& arguments, const std::string& message) {
+    CAPTURE(arguments[0]);
+    const auto start_time = std::chrono::steady_clock::now();
+    const CliOutcome outcome = run_in(scratch.root, cli(arguments));
+    CHECK(outcome.exit_code == 2);
+    CHECK(outcome.err == message);
+    CHECK(seconds_since(start_time) < 5.0);  // the work takes minutes (indent, eval) or 15 s (the raw fits)
+  };
+  const std::string missing = ": cannot be written: the folder nodir does not exist (expected an existing folder; create it first)\n";
+  refused_at_once({"indent", "--out", "nodir/c.csv", "--quiet"}, "growthuq indent: error: nodir/c.csv" + missing);
+  spit(scratch.root / "tubes.csv", "k_N_per_m,d_um,d0_um,h_nm\n1.5,6.5,6.0,200\n");
+  refused_at_once({"eval", "--fidelity", "shell_fe", "--in", "tubes.csv", "--out", "nodir/r.csv"},
+                  "growthuq eval: error: nodir/r.csv" + missing);
+  refused_at_once({"fit-correction", "--training", source + "/src/correction/training.csv", "--out", "c.inc", "--errors",
+                   "nodir/e.csv"},
+                  "growthuq fit-correction: error: nodir/e.csv" + missing);
+  // A folder that is a device (made here, never /dev's).
+  if (make_special_file(scratch.root / "dev", SpecialKind::null_device)) {
+    refused_at_once({"indent", "--out", "dev/c.csv", "--quiet"},
+                    "growthuq indent: error: dev/c.csv: cannot be written: dev is not a folder\n");
+  }
+  // An existing output directory of a raw-data campaign, before its curves are fitted.
+  fs::create_directories(scratch.root / "existing");
+  const std::string exists = "existing: output directory already exists; choose another (--out DIR) or pass --force to "
+                             "replace its results\n";
+  refused_at_once({"check", source + "/campaigns/from_raw.ini", "--out", "existing"}, "growthuq check: error: " + exists);
+  refused_at_once({"run", source + "/campaigns/from_raw.ini", "--out", "existing", "--quiet"}, "growthuq run: error: " + exists);
+  CHECK(fs::is_empty(scratch.root / "existing"));
+}
+
+TEST_CASE("a command's outputs commit together: the second failing leaves no first") {
+  const ScratchDirectory scratch("commit_together");
+  // The second output's temporary file cannot be made (a folder in its place): the first,
+  // written before, must not be committed.
+  fs::create_directories(scratch.root / "e.csv.partial");
+  const CliOutcome correction = run_in(scratch.root, cli({"fit-correction", "--training", source + "/src/correction/training.csv",
+                                                          "--out", "c.inc", "--errors", "e.csv"}));
+  CHECK(correction.exit_code == 2);
+  CHECK(correction.err == "growthuq fit-correction: error: e.csv.partial: is a directory: expected no file there (the "
+                          "temporary file a result is written to before it is renamed into place)\n");
+  CHECK(!fs::exists(scratch.root / "c.inc"));
+  CHECK(!fs::exists(scratch.root / "c.inc.partial"));
+
+  const std::string raw = source + "/distributions/example_raw/wild_type/";
+  fs::create_directories(scratch.root / "d.ini.partial");
+  const CliOutcome relax = run_in(scratch.root, cli({"relax", raw + "relaxation_curves.csv", "--meta", raw + "relaxation_meta.csv",
+                                                     "--out", "fits.csv", "--fit-distributions", "d.ini"}));
+  CHECK(relax.exit_code == 2);
+  CHECK(relax.err.starts_with("growthuq relax: error: d.ini.partial: is a directory"));
+  CHECK(!fs::exists(scratch.root / "fits.csv"));
+  CHECK(!fs::exists(scratch.root / "fits.csv.partial"));
+
+  // Both possible: both written.
+  fs::remove(scratch.root / "e.csv.partial");
+  const CliOutcome both = run_in(scratch.root, cli({"fit-correction", "--training", source + "/src/correction/training.csv",
+                                                    "--out", "c.inc", "--errors", "e.csv"}));
+  CHECK_MESSAGE(both.exit_code == 0, both.err);
+  CHECK(fs::file_size(scratch.root / "c.inc") > 0);
+  CHECK(fs::file_size(scratch.root / "e.csv") > 0);
+}
+
+TEST_CASE("a finite-element run says how long it will take before it starts, also with --quiet") {
+  const ScratchDirectory scratch("fe_estimate_quiet");
+  // 100 000 finite-element samples: days. Stopped (SIGKILL) once it has said so.
+  const std::string campaign = source + "/tests/campaign/data/fidelity_campaign.ini";
+  for (const std::vector<std::string>& arguments :
+       {std::vector<std::string>{"run", campaign, "--samples", "100000", "--quiet", "--out", "big"},
+        std::vector<std::string>{"tradeoff", campaign, "--samples-list", "20", "--fe-samples-list", "2,100000", "--quiet",
+                                 "--out", "t.csv"}}) {
+    CAPTURE(arguments[0]);
+    const pid_t pid = start(cli(arguments), scratch.root);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    std::string err;
+    bool ended = false;
+    while (err.find(" days with 1 process") == std::string::npos && std::chrono::steady_clock::now() < deadline) {
+      int status = 0;
+      if (::waitpid(pid, &status, WNOHANG) == pid) {
+        ended = true;
+        break;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      err = slurp(scratch.root / "stderr.txt");
+    }
+    if (!ended) {
+      ::kill(pid, SIGKILL);
+      wait_for(pid);
+    }
+    err = slurp(scratch.root / "stderr.txt");
+    CAPTURE(err);
+    CHECK(!ended);
+    CHECK(err.starts_with("growthuq " + arguments[0] + ": time: "));
+    CHECK(err.find("00 finite-element samples") != std::string::npos);  // 100000 (run) or 300006 (3 lines x 100002)
+    CHECK(err.find(" days with 1 process") != std::string::npos);
+  }
+}
