@@ -139,7 +139,14 @@ int run_fit_correction(const Arguments& arguments) {
   check_can_write(out, overwrite);
   if (!errors.empty()) check_can_write(errors, overwrite);
   const std::vector<TrainingPoint> points = read_training_csv(training);
-  const Correction correction = fit_correction(points, ShellFeOptions{}, Instrument{}.poisson_ratio);
+  // The fit's refusals (too few usable rows, collinear groups) are the training file's.
+  const Correction correction = [&] {
+    try {
+      return fit_correction(points, ShellFeOptions{}, Instrument{}.poisson_ratio);
+    } catch (const InputError& error) {
+      throw InputError(training, error.problem());
+    }
+  }();
   print("fitted", errors_of(points, correction, false));
   print("held out", errors_of(points, correction, true));
   const CrossValidation cv = cross_validate(points, Instrument{}.poisson_ratio);

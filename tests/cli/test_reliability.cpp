@@ -273,3 +273,118 @@ TEST_CASE("a finite-element run says how long it will take before it starts, als
     CHECK(err.find(" days with 1 process") != std::string::npos);
   }
 }
+
+namespace {
+
+// `text` with every line's `column`-th comma-separated cell (0-based) replaced by `value`,
+// the header line kept.
+std::string with_column(const std::string& text, std::size_t column, const std::string& value) {
+  std::string out;
+  std::size_t start = 0;
+  bool header = true;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(start, end - start);
+    if (!header && !line.empty()) {
+      std::size_t from = 0;
+      for (std::size_t c = 0; c < column; ++c) from = line.find(',', from) + 1;
+      const std::size_t to = line.find(',', from);
+      line.replace(from, to - from, value);
+    }
+    header = false;
+    out += line + "\n";
+    start = end + 1;
+  }
+  return out;
+}
+
+// The wild type's line file with the section [variable] replaced by `section`.
+std::string line_with(const std::string& variable, const std::string& section) {
+  const std::string text = slurp(source + "/distributions/wild_type.ini");
+  const std::size_t from = text.find("[" + variable + "]");
+  const std::size_t to = text.find("\n[", from + 1);
+  return text.substr(0, from) + section + (to == std::string::npos ? "" : text.substr(to));
+}
+
+}  // namespace
+
+TEST_CASE("nonsense inputs are refused naming file, line and value, or warned about") {
+  const ScratchDirectory scratch("nonsense_inputs");
+  // Laws that draw values <= 0 of a positive quantity: sampled, with a warning saying how many.
+  spit(scratch.root / "uniform.ini",
+       line_with("k", "[k]\nlaw = uniform\nlower = -1\nupper = 3\nunit = N/m\nsource = illustrative\nnote = test\n"));
+  const CliOutcome uniform =
+      run_in(scratch.root, cli({"sample", "--line", "uniform.ini", "--samples", "100", "--seed", "1", "--out", "u.csv"}));
+  CHECK_MESSAGE(uniform.exit_code == 0, uniform.err);
+  CHECK(uniform.err.find("growthuq sample: warning: k: 25 % of the draws of its law uniform") != std::string::npos);
+  CHECK(uniform.err.find("are <= 0, which no tube has: those samples are flagged and left out of the statistics") !=
+        std::string::npos);
+  spit(scratch.root / "empirical.ini",
+       line_with("k", "[k]\nlaw = empirical\nvalues = -0.5, 1, 2, 3, 4\nunit = N/m\nsource = illustrative\nnote = test\n"));
+  const CliOutcome empirical =
+      run_in(scratch.root, cli({"sample", "--line", "empirical.ini", "--samples", "100", "--seed", "1", "--out", "e.csv"}));
+  CHECK_MESSAGE(empirical.exit_code == 0, empirical.err);
+  CHECK(empirical.err.find("growthuq sample: warning: k: ") != std::string::npos);
+  CHECK(empirical.err.find("of the draws of its law empirical") != std::string::npos);
+  // The shipped law draws nothing <= 0: no warning.
+  const CliOutcome shipped = run_in(
+      scratch.root, cli({"sample", "--line", source + "/distributions/wild_type.ini", "--samples", "100", "--seed", "1", "--out", "w.csv"}));
+  CHECK_MESSAGE(shipped.exit_code == 0, shipped.err);
+  CHECK(shipped.err.find("warning") == std::string::npos);
+
+  // An einf fraction of 1.5.
+  spit(scratch.root / "einf.csv", "tube,einf_frac\na,0.5\nb,0.6\nc,1.5\n");
+  const CliOutcome fraction = run_in(scratch.root, cli({"fit", "einf.csv", "--column", "einf_frac"}));
+  CHECK(fraction.exit_code == 2);
+  CHECK(fraction.err == "growthuq fit: error: einf.csv:4: column einf_frac = '1.5': expected a rescaled equilibrium "
+                        "modulus in [0, 1) (as a fraction; [0, 100) in %)\n");
+
+  // A tube listed twice in a raw table.
+  const fs::path raw = scratch.root / "raw";
+  fs::copy(source + "/distributions/example_raw/wild_type", raw);
+  const std::string indentation = slurp(raw / "indentation.csv");
+  const std::size_t first_row = indentation.find("\nI01,") + 1;
+  const std::string repeated = indentation.substr(first_row, indentation.find('\n', first_row) - first_row);
+  spit(raw / "indentation.csv", indentation + repeated + "\n");
+  const std::size_t lines = lines_in(indentation);
+  const std::size_t first_line = lines_in(indentation.substr(0, first_row)) + 1;
+  const CliOutcome twice = run_in(scratch.root, cli({"fit-line", "raw/raw.ini", "--out", "fitted.ini"}));
+  CHECK(twice.exit_code == 2);
+  CHECK(twice.err.find("raw/indentation.csv:" + std::to_string(lines + 1) + ": tube = 'I01': expected each tube once (it is "
+                       "also raw/indentation.csv:" + std::to_string(first_line) + ")\n") != std::string::npos);
+  CHECK(!fs::exists(scratch.root / "fitted.ini"));
+
+  // Training rows of one probe radius: rho/d0 and a/d0 move together (collinear terms).
+  const std::string training = slurp(source + "/src/correction/training.csv");
+  spit(scratch.root / "one_rho.csv", with_column(training, 5, "0.5"));
+  const CliOutcome collinear = run_in(scratch.root, cli({"fit-correction", "--training", "one_rho.csv", "--out", "c.inc"}));
+  CHECK(collinear.exit_code == 2);
+  CHECK(collinear.err.starts_with("growthuq fit-correction: error: one_rho.csv: "));
+  CHECK(collinear.err.find("fitting rows whose groups are collinear") != std::string::npos);
+  CHECK(!fs::exists(scratch.root / "c.inc"));
+  // Too few rows: the message names the file.
+  spit(scratch.root / "few.csv", training.substr(0, training.find("\n5,") + 1));
+  const CliOutcome few = run_in(scratch.root, cli({"fit-correction", "--training", "few.csv", "--out", "c.inc"}));
+  CHECK(few.exit_code == 2);
+  CHECK(few.err.starts_with("growthuq fit-correction: error: few.csv: "));
+  CHECK(few.err.find(" usable fitting rows: expected at least ") != std::string::npos);
+}
+
+TEST_CASE("a [shell_fe] key's error names the key's line") {
+  const ScratchDirectory scratch("shell_fe_key_line");
+  const std::string campaign = slurp(source + "/tests/campaign/data/fidelity_campaign.ini");
+  const std::string edited = campaign.substr(0, campaign.find("mesh = coarse")) +
+                             "mesh = coarse\ntube_length_um = 20\nprobe_distance_um = 30\n" +
+                             campaign.substr(campaign.find("mesh = coarse") + 14);
+  // Three folders deep beside a link to the distributions, as its relative paths expect.
+  fs::create_directories(scratch.root / "a/b/c");
+  fs::create_directory_symlink(source + "/distributions", scratch.root / "distributions");
+  const fs::path file = scratch.root / "a/b/c/campaign.ini";
+  spit(file, edited);
+  const CliOutcome check = run_in(scratch.root, cli({"check", file.string(), "--out", "never"}));
+  const std::size_t key_line = lines_in(edited.substr(0, edited.find("probe_distance_um"))) + 1;
+  CHECK(check.exit_code == 2);
+  CHECK(check.err.starts_with("growthuq check: error: " + file.string() + ":" + std::to_string(key_line) +
+                              ": probe_distance_um = '30': expected"));
+}
