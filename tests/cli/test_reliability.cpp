@@ -189,7 +189,7 @@ TEST_CASE("every output path is checked before the work") {
   const std::string missing = ": cannot be written: the folder nodir does not exist (expected an existing folder; create it first)\n";
   refused_at_once({"indent", "--out", "nodir/c.csv", "--quiet"}, "growthuq indent: error: nodir/c.csv" + missing);
   spit(scratch.root / "tubes.csv", "k_N_per_m,d_um,d0_um,h_nm\n1.5,6.5,6.0,200\n");
-  refused_at_once({"eval", "--fidelity", "shell_fe", "--in", "tubes.csv", "--out", "nodir/r.csv"},
+  refused_at_once({"eval", "--fidelity", "shell_fe", "--rho-um", "0.5", "--in", "tubes.csv", "--out", "nodir/r.csv"},
                   "growthuq eval: error: nodir/r.csv" + missing);
   refused_at_once({"fit-correction", "--training", source + "/src/correction/training.csv", "--out", "c.inc", "--errors",
                    "nodir/e.csv"},
@@ -387,4 +387,20 @@ TEST_CASE("a [shell_fe] key's error names the key's line") {
   CHECK(check.exit_code == 2);
   CHECK(check.err.starts_with("growthuq check: error: " + file.string() + ":" + std::to_string(key_line) +
                               ": probe_distance_um = '30': expected"));
+}
+
+TEST_CASE("a mesh file beyond the generated meshes' 400 000 triangles is refused at once, naming it") {
+  const ScratchDirectory scratch("mesh_cap");
+  // Four vertices and 400 002 faces: refused by their count, before the surface is validated.
+  std::string off = "OFF\n4 400002 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  for (int f = 0; f < 400002; ++f) off += "3 0 1 2\n";
+  spit(scratch.root / "big.off", off);
+  const auto start_time = std::chrono::steady_clock::now();
+  const CliOutcome indent =
+      run_in(scratch.root, cli({"indent", "--geometry", "file", "--mesh-file", "big.off", "--out", "c.csv", "--quiet"}));
+  CHECK(indent.exit_code == 2);
+  CHECK(indent.err == "growthuq indent: error: big.off: 400002 triangles: expected at most 400000 (the limit of a "
+                      "generated mesh; it bounds time and memory): coarsen the surface\n");
+  CHECK(seconds_since(start_time) < 20.0);
+  CHECK(!fs::exists(scratch.root / "c.csv"));
 }
