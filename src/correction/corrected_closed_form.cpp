@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <utility>
 
@@ -228,11 +227,11 @@ Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOp
   // Rows whose groups move together (one probe radius for every row) leave the polynomial's
   // terms collinear: least squares then returns huge coefficients that cancel (+-6e12 were
   // written), right on the rows and wild between them. Refused by the pivoted R's diagonal: its
-  // smallest entry relative to its largest is the design's reciprocal condition, near 1e-16 for
-  // collinear terms.
+  // smallest entry relative to its largest estimates the design's reciprocal condition: 0.019
+  // to 0.023 for the shipped training set and its folds, 3.7e-17 with one probe radius for
+  // every row (measured); 1e-9 lies far from both.
   const Eigen::VectorXd pivots = qr.matrixR().diagonal().cwiseAbs();
   const double conditioning = pivots.minCoeff() / pivots.maxCoeff();
-  if (std::getenv("GROWTHUQ_DEBUG_CONDITIONING")) std::fprintf(stderr, "conditioning %g\n", conditioning);  // TEMP
   if (!(conditioning > 1e-9)) {
     char text[32];
     std::snprintf(text, sizeof text, "%.2g", conditioning);

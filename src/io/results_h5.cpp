@@ -348,6 +348,14 @@ namespace {
   throw WriteError(file, "HDF5 write failed in " + error.getFuncName() + ": " + error.getDetailMsg());
 }
 
+// A write that failed where no exception reached us (a dataset's close in a destructor) is
+// still the caller's failure: the file lost data.
+void throw_if_failed(const std::string& file, const hdf5::WriteFailureGuard& guard) {
+  if (!guard.failed()) return;
+  const std::string reason = guard.reason();
+  throw WriteError(file, "write failed: " + (reason.empty() ? std::string("the system refused a write") : reason));
+}
+
 // Closes `file`. A close that fails leaves HDF5's file half closed, and closing it again (the
 // C++ destructor would) dereferences freed memory: so after a failure the File is released
 // without its destructor, its identifier left to HDF5. Returns whether the close succeeded.
@@ -357,6 +365,7 @@ bool close_or_release(std::unique_ptr<File>& file) {
     file->file.close();
   } catch (const H5::Exception&) {
     static_cast<void>(file.release());
+    hdf5::note_file_left_half_closed();
     return false;
   }
   file.reset();
@@ -373,12 +382,19 @@ ResultsH5Writer::ResultsH5Writer(std::string path, Overwrite overwrite)
   const std::string partial = path_ + ".partial";
   prepare_partial_file(partial);
   try {
-    file_ = std::make_unique<File>(partial, H5::H5File(partial, H5F_ACC_TRUNC));
+    // No sieve buffer: raw data reach the disk in the write that gives them, so a full disk
+    // fails that write (an exception) rather than a later close in a destructor.
+    H5::FileAccPropList access;
+    H5Pset_sieve_buf_size(access.getId(), 0);
+    file_ = std::make_unique<File>(partial, H5::H5File(partial, H5F_ACC_TRUNC, H5::FileCreatPropList::DEFAULT, access));
     create_untimed_group(file_->file, "lines", /*in_creation_order=*/true);
   } catch (const H5::Exception& error) {
     const bool write_failed = file_ && file_->guard.failed();
     const std::string reason = file_ ? file_->guard.reason() : std::string();
-    if (file_) close_or_release(file_);
+    if (file_) {
+      file_->guard.abandon();
+      close_or_release(file_);
+    }
     std::remove(partial.c_str());
     if (write_failed) throw WriteError(partial, "write failed: " + reason);
     throw WriteError(partial, "cannot create the HDF5 file (" + error.getDetailMsg() + ")");
@@ -397,6 +413,7 @@ void ResultsH5Writer::declare_lines(const std::vector<std::string>& names) {
   } catch (const H5::Exception& error) {
     rethrow_hdf5(file_->partial, error, file_->guard);
   }
+  throw_if_failed(file_->partial, file_->guard);
   lines_declared_ = names;
 }
 
@@ -481,6 +498,7 @@ void ResultsH5Writer::write_line(const LineResult& result, const std::vector<Qua
   } catch (const H5::Exception& error) {
     rethrow_hdf5(file_->partial, error, file_->guard);
   }
+  throw_if_failed(file_->partial, file_->guard);
   lines_written_.push_back(result.name);
   summaries_.insert(summaries_.end(), summaries.begin(), summaries.end());
 }
@@ -504,6 +522,7 @@ void ResultsH5Writer::replace_summaries(const std::vector<QuantitySummary>& summ
   } catch (const H5::Exception& error) {
     rethrow_hdf5(file_->partial, error, file_->guard);
   }
+  throw_if_failed(file_->partial, file_->guard);
   summaries_ = summaries;
 }
 
@@ -523,7 +542,13 @@ void ResultsH5Writer::finish(const CampaignMetadata& metadata) {
     write_u64_attribute(root, "samples_per_line", metadata.samples_per_line);
     write_strings_attribute(root, "line_order", lines_declared_.empty() ? lines_written_ : lines_declared_);
     root.close();
+    // Everything to the disk while the file is open: a full disk fails here, where the file
+    // can still be closed (into memory), not inside the close (which would leave it half
+    // closed: io/hdf5_errors.hpp).
+    file_->guard.require_room_for_flush(file_->file.getId());
+    if (!file_->guard.failed()) file_->file.flush(H5F_SCOPE_GLOBAL);
   } catch (const H5::Exception& error) {
+    file_->guard.abandon();
     rethrow_hdf5(partial, error, file_->guard);
   }
   // The file's last metadata reach the disk here: a full disk may show only now.
@@ -546,6 +571,7 @@ ResultsH5Writer::~ResultsH5Writer() {
   if (!file_) return;
   hdf5::use_error_handler();  // the destructor may run on another thread than the writes
   const std::string partial = file_->partial;
+  file_->guard.abandon();    // not kept: what HDF5 still flushes goes to memory, never to a full disk
   close_or_release(file_);  // never throws; the file is removed either way
   std::remove(partial.c_str());
 }
@@ -622,6 +648,7 @@ void ResultsH5Writer::write_table(const std::string& path, const std::vector<Ext
   } catch (const H5::Exception& error) {
     rethrow_hdf5(file_->partial, error, file_->guard);
   }
+  throw_if_failed(file_->partial, file_->guard);
 }
 
 namespace {
@@ -648,6 +675,7 @@ void ResultsH5Writer::write_array(const std::string& path, const std::vector<dou
   } catch (const H5::Exception& error) {
     rethrow_hdf5(file_->partial, error, file_->guard);
   }
+  throw_if_failed(file_->partial, file_->guard);
 }
 
 void ResultsH5Writer::write_array(const std::string& path, const std::vector<std::int32_t>& values, const std::string& unit,
@@ -660,6 +688,7 @@ void ResultsH5Writer::write_array(const std::string& path, const std::vector<std
   } catch (const H5::Exception& error) {
     rethrow_hdf5(file_->partial, error, file_->guard);
   }
+  throw_if_failed(file_->partial, file_->guard);
 }
 
 namespace {
@@ -689,6 +718,7 @@ void ResultsH5Writer::write_attribute(const std::string& path, const std::string
   } catch (const H5::Exception& error) {
     rethrow_hdf5(file_->partial, error, file_->guard);
   }
+  throw_if_failed(file_->partial, file_->guard);
 }
 
 void ResultsH5Writer::write_attribute(const std::string& path, const std::string& name, double value) {
@@ -699,6 +729,7 @@ void ResultsH5Writer::write_attribute(const std::string& path, const std::string
   } catch (const H5::Exception& error) {
     rethrow_hdf5(file_->partial, error, file_->guard);
   }
+  throw_if_failed(file_->partial, file_->guard);
 }
 
 }  // namespace growthuq

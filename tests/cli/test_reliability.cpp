@@ -91,7 +91,7 @@ TEST_CASE("a run refused by the lock touches nothing: the live run's staging, ch
   REQUIRE(before.count("staging/samples.csv.partial") == 1);
   REQUIRE(before.count("checkpoint/chunks.bin") == 1);
 
-  const std::string in_use = "growthuq run: error: out: is in use by another growthuq run (pid 4242 on host elsewhere, "
+  const std::string in_use = ": error: out: is in use by another growthuq run (pid 4242 on host elsewhere, "
                              "lock file out/run.lock): wait for it to end or stop it; two runs in one output directory "
                              "would mix their files\n";
   for (const std::vector<std::string>& arguments :
@@ -99,11 +99,12 @@ TEST_CASE("a run refused by the lock touches nothing: the live run's staging, ch
         std::vector<std::string>{"run", small_campaign, "--quiet", "--out", "out", "--force"},
         std::vector<std::string>{"run", "--resume", "out", "--quiet"},
         std::vector<std::string>{"check", small_campaign, "--out", "out", "--force"}}) {
+    CAPTURE(arguments[0]);
     CAPTURE(arguments[1]);
     CAPTURE(arguments.back());
     const CliOutcome refused = run_in(scratch.root, cli(arguments));
     CHECK(refused.exit_code == 2);
-    CHECK(refused.err == in_use);
+    CHECK(refused.err == "growthuq " + arguments[0] + in_use);
     CHECK(snapshot(out) == before);
   }
 }
@@ -115,23 +116,26 @@ TEST_CASE("a full disk while results.h5 is written: one line, no crash, old resu
     MESSAGE("cannot mount a tmpfs here (needs root): the full disk during the HDF5 write is not checked");
     return;
   }
+  // The command runs in the scratch folder (its stdout and stderr files must not be on the full
+  // disk), its results on the small disk.
   const fs::path out = disk.where / "out";
-  const std::vector<std::string> rerun = {"run", small_campaign, "--formats", "hdf5", "--quiet", "--out", "out", "--force"};
+  const std::vector<std::string> rerun = {"run", small_campaign, "--formats", "hdf5", "--quiet", "--out", "disk/out", "--force"};
   bool hdf5_failed = false;
   // The free space left decides which write meets the full disk first: from too little for the
-  // run to start (the up-front room check) to enough for all of it.
-  for (std::uint64_t keep = 56 * 1024; keep <= 160 * 1024 && !hdf5_failed; keep += 8 * 1024) {
+  // run to start (the up-front room check) through results.h5's data, summary.csv and
+  // results.h5's last metadata, to enough for all of it.
+  for (std::uint64_t keep = 56 * 1024; keep <= 400 * 1024; keep += 8 * 1024) {
     CAPTURE(keep);
     fs::remove(disk.where / "filler");
     fs::remove_all(out);
-    const CliOutcome old = run_in(disk.where, cli({"run", small_campaign, "--formats", "hdf5", "--samples", "100", "--quiet",
-                                                   "--out", "out"}));
+    const CliOutcome old = run_in(scratch.root, cli({"run", small_campaign, "--formats", "hdf5", "--samples", "100",
+                                                     "--quiet", "--out", "disk/out"}));
     REQUIRE_MESSAGE(old.exit_code == 0, old.err);
     const std::string old_h5 = slurp(out / "results.h5");
     const std::string old_summary = slurp(out / "summary.csv");
     disk.fill_leaving("filler", keep);
 
-    const CliOutcome run = run_in(disk.where, cli(rerun));
+    const CliOutcome run = run_in(scratch.root, cli(rerun));
     CAPTURE(run.err);
     REQUIRE(run.exit_code != -1);  // never killed by a signal (it was SIGSEGV, exit 139)
     if (run.exit_code == 0) break;  // room enough: nothing failed
@@ -145,13 +149,17 @@ TEST_CASE("a full disk while results.h5 is written: one line, no crash, old resu
     CHECK(slurp(out / "summary.csv") == old_summary);
     CHECK(!fs::exists(out / "staging"));
     CHECK(!fs::exists(out / "run.lock"));
-    if (run.err.find("out/staging/results.h5.partial: write failed: No space left on device") == std::string::npos) continue;
-    hdf5_failed = true;
+    if (run.err.find("disk/out/staging/results.h5.partial: write failed: No space left on device") == std::string::npos) {
+      continue;
+    }
     CHECK(run.err.ends_with("; the checkpoint keeps the finished chunks: make room, then finish with: growthuq run --resume "
-                            "out\n"));
+                            "disk/out\n"));
     REQUIRE(fs::exists(out / "checkpoint" / "manifest.txt"));
+    if (hdf5_failed) continue;
+    hdf5_failed = true;
+    // Room made, the resume finishes (once: it takes the place of the run).
     fs::remove(disk.where / "filler");
-    const CliOutcome resumed = run_in(disk.where, cli({"run", "--resume", "out", "--quiet"}));
+    const CliOutcome resumed = run_in(scratch.root, cli({"run", "--resume", "disk/out", "--quiet"}));
     CHECK_MESSAGE(resumed.exit_code == 0, resumed.err);
     CHECK(!fs::exists(out / "checkpoint"));
     CHECK(slurp(out / "summary.csv") != old_summary);  // the 200-sample run's
@@ -187,7 +195,7 @@ TEST_CASE("every output path is checked before the work") {
     CHECK(seconds_since(start_time) < 5.0);  // the work takes minutes (indent, eval) or 15 s (the raw fits)
   };
   const std::string missing = ": cannot be written: the folder nodir does not exist (expected an existing folder; create it first)\n";
-  refused_at_once({"indent", "--out", "nodir/c.csv", "--quiet"}, "growthuq indent: error: nodir/c.csv" + missing);
+  refused_at_once({"indent", "--p-MPa", "0.3", "--E-MPa", "30", "--h-nm", "150", "--d0-um", "5", "--rho-um", "0.5", "--out", "nodir/c.csv", "--quiet"}, "growthuq indent: error: nodir/c.csv" + missing);
   spit(scratch.root / "tubes.csv", "k_N_per_m,d_um,d0_um,h_nm\n1.5,6.5,6.0,200\n");
   refused_at_once({"eval", "--fidelity", "shell_fe", "--rho-um", "0.5", "--in", "tubes.csv", "--out", "nodir/r.csv"},
                   "growthuq eval: error: nodir/r.csv" + missing);
@@ -196,7 +204,7 @@ TEST_CASE("every output path is checked before the work") {
                   "growthuq fit-correction: error: nodir/e.csv" + missing);
   // A folder that is a device (made here, never /dev's).
   if (make_special_file(scratch.root / "dev", SpecialKind::null_device)) {
-    refused_at_once({"indent", "--out", "dev/c.csv", "--quiet"},
+    refused_at_once({"indent", "--p-MPa", "0.3", "--E-MPa", "30", "--h-nm", "150", "--d0-um", "5", "--rho-um", "0.5", "--out", "dev/c.csv", "--quiet"},
                     "growthuq indent: error: dev/c.csv: cannot be written: dev is not a folder\n");
   }
   // An existing output directory of a raw-data campaign, before its curves are fitted.
@@ -245,7 +253,7 @@ TEST_CASE("a finite-element run says how long it will take before it starts, als
   const std::string campaign = source + "/tests/campaign/data/fidelity_campaign.ini";
   for (const std::vector<std::string>& arguments :
        {std::vector<std::string>{"run", campaign, "--samples", "100000", "--quiet", "--out", "big"},
-        std::vector<std::string>{"tradeoff", campaign, "--samples-list", "20", "--fe-samples-list", "2,100000", "--quiet",
+        std::vector<std::string>{"tradeoff", campaign, "--samples-list", "20,40", "--fe-samples-list", "2,100000", "--quiet",
                                  "--out", "t.csv"}}) {
     CAPTURE(arguments[0]);
     const pid_t pid = start(cli(arguments), scratch.root);
@@ -269,7 +277,9 @@ TEST_CASE("a finite-element run says how long it will take before it starts, als
     CAPTURE(err);
     CHECK(!ended);
     CHECK(err.starts_with("growthuq " + arguments[0] + ": time: "));
-    CHECK(err.find("00 finite-element samples") != std::string::npos);  // 100000 (run) or 300006 (3 lines x 100002)
+    // The finite-element line's 100000 (run); 3 lines x (2 + 100000) (tradeoff).
+    CHECK(err.find(arguments[0] == "run" ? "100000 finite-element samples" : "300006 finite-element samples") !=
+          std::string::npos);
     CHECK(err.find(" days with 1 process") != std::string::npos);
   }
 }
@@ -302,8 +312,8 @@ std::string with_column(const std::string& text, std::size_t column, const std::
 // The wild type's line file with the section [variable] replaced by `section`.
 std::string line_with(const std::string& variable, const std::string& section) {
   const std::string text = slurp(source + "/distributions/wild_type.ini");
-  const std::size_t from = text.find("[" + variable + "]");
-  const std::size_t to = text.find("\n[", from + 1);
+  const std::size_t from = text.find("\n[" + variable + "]\n") + 1;
+  const std::size_t to = text.find("\n[", from);
   return text.substr(0, from) + section + (to == std::string::npos ? "" : text.substr(to));
 }
 
@@ -397,7 +407,7 @@ TEST_CASE("a mesh file beyond the generated meshes' 400 000 triangles is refused
   spit(scratch.root / "big.off", off);
   const auto start_time = std::chrono::steady_clock::now();
   const CliOutcome indent =
-      run_in(scratch.root, cli({"indent", "--geometry", "file", "--mesh-file", "big.off", "--out", "c.csv", "--quiet"}));
+      run_in(scratch.root, cli({"indent", "--p-MPa", "0.3", "--E-MPa", "30", "--h-nm", "150", "--d0-um", "5", "--rho-um", "0.5", "--geometry", "file", "--mesh-file", "big.off", "--out", "c.csv", "--quiet"}));
   CHECK(indent.exit_code == 2);
   CHECK(indent.err == "growthuq indent: error: big.off: 400002 triangles: expected at most 400000 (the limit of a "
                       "generated mesh; it bounds time and memory): coarsen the surface\n");
