@@ -14,7 +14,7 @@
 #include <utility>
 
 #include "core/interrupt.hpp"
-#include "hdf5_errors.hpp"
+#include "hdf5_output_file.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/units.hpp"
 
@@ -329,50 +329,14 @@ std::vector<std::string> status_names() {
 
 }  // namespace
 
+// The partial file: written through hdf5::OutputFile (no crash, no diagnostics on a full disk:
+// io/hdf5_output_file.hpp), removed by a signal that ends the process.
 struct ResultsH5Writer::File {
   std::string partial;
-  H5::H5File file;
+  hdf5::OutputFile out{partial};
   RemovedOnSignal removed_on_signal{partial};  // a kill leaves no results.h5.partial
-  hdf5::WriteFailureGuard guard{file.getId(), partial};  // a full disk: no crash (io/hdf5_errors.hpp)
+  H5::H5File& file = out.file();
 };
-
-namespace {
-
-// The failure as one line naming the file: the system's reason when a write failed (a full
-// disk), HDF5's own words otherwise.
-[[noreturn]] void rethrow_hdf5(const std::string& file, const H5::Exception& error, const hdf5::WriteFailureGuard& guard) {
-  if (guard.failed()) {
-    const std::string reason = guard.reason();
-    throw WriteError(file, "write failed: " + (reason.empty() ? std::string("the system refused a write") : reason));
-  }
-  throw WriteError(file, "HDF5 write failed in " + error.getFuncName() + ": " + error.getDetailMsg());
-}
-
-// A write that failed where no exception reached us (a dataset's close in a destructor) is
-// still the caller's failure: the file lost data.
-void throw_if_failed(const std::string& file, const hdf5::WriteFailureGuard& guard) {
-  if (!guard.failed()) return;
-  const std::string reason = guard.reason();
-  throw WriteError(file, "write failed: " + (reason.empty() ? std::string("the system refused a write") : reason));
-}
-
-// Closes `file`. A close that fails leaves HDF5's file half closed, and closing it again (the
-// C++ destructor would) dereferences freed memory: so after a failure the File is released
-// without its destructor, its identifier left to HDF5. Returns whether the close succeeded.
-template <typename File>
-bool close_or_release(std::unique_ptr<File>& file) {
-  try {
-    file->file.close();
-  } catch (const H5::Exception&) {
-    static_cast<void>(file.release());
-    hdf5::note_file_left_half_closed();
-    return false;
-  }
-  file.reset();
-  return true;
-}
-
-}  // namespace
 
 ResultsH5Writer::ResultsH5Writer(std::string path, Overwrite overwrite)
     : path_(std::move(path)), overwrite_(overwrite) {
@@ -382,22 +346,16 @@ ResultsH5Writer::ResultsH5Writer(std::string path, Overwrite overwrite)
   const std::string partial = path_ + ".partial";
   prepare_partial_file(partial);
   try {
-    // No sieve buffer: raw data reach the disk in the write that gives them, so a full disk
-    // fails that write (an exception) rather than a later close in a destructor.
-    H5::FileAccPropList access;
-    H5Pset_sieve_buf_size(access.getId(), 0);
-    file_ = std::make_unique<File>(partial, H5::H5File(partial, H5F_ACC_TRUNC, H5::FileCreatPropList::DEFAULT, access));
-    create_untimed_group(file_->file, "lines", /*in_creation_order=*/true);
-  } catch (const H5::Exception& error) {
-    const bool write_failed = file_ && file_->guard.failed();
-    const std::string reason = file_ ? file_->guard.reason() : std::string();
-    if (file_) {
-      file_->guard.abandon();
-      close_or_release(file_);
+    file_ = std::make_unique<File>(partial);
+    try {
+      create_untimed_group(file_->file, "lines", /*in_creation_order=*/true);
+    } catch (const H5::Exception& error) {
+      file_->out.rethrow(error);
     }
+  } catch (const InputError&) {
+    file_.reset();
     std::remove(partial.c_str());
-    if (write_failed) throw WriteError(partial, "write failed: " + reason);
-    throw WriteError(partial, "cannot create the HDF5 file (" + error.getDetailMsg() + ")");
+    throw;
   }
 }
 
@@ -411,9 +369,9 @@ void ResultsH5Writer::declare_lines(const std::vector<std::string>& names) {
       create_untimed_group(file_->file, "lines/" + name);
     }
   } catch (const H5::Exception& error) {
-    rethrow_hdf5(file_->partial, error, file_->guard);
+    file_->out.rethrow(error);
   }
-  throw_if_failed(file_->partial, file_->guard);
+  file_->out.throw_if_failed();
   lines_declared_ = names;
 }
 
@@ -496,9 +454,9 @@ void ResultsH5Writer::write_line(const LineResult& result, const std::vector<Qua
     attach_dimension(loadings, label_dimension(analysis_group, "variable", variables, static_cast<std::size_t>(analysis.loadings.rows())), 0);
     attach_dimension(loadings, index_dimension(analysis_group, "component", static_cast<std::size_t>(analysis.loadings.cols())), 1);
   } catch (const H5::Exception& error) {
-    rethrow_hdf5(file_->partial, error, file_->guard);
+    file_->out.rethrow(error);
   }
-  throw_if_failed(file_->partial, file_->guard);
+  file_->out.throw_if_failed();
   lines_written_.push_back(result.name);
   summaries_.insert(summaries_.end(), summaries.begin(), summaries.end());
 }
@@ -520,9 +478,9 @@ void ResultsH5Writer::replace_summaries(const std::vector<QuantitySummary>& summ
       if (!rows.empty()) dataset.write(summary_rows(rows).data(), summary_type());
     }
   } catch (const H5::Exception& error) {
-    rethrow_hdf5(file_->partial, error, file_->guard);
+    file_->out.rethrow(error);
   }
-  throw_if_failed(file_->partial, file_->guard);
+  file_->out.throw_if_failed();
   summaries_ = summaries;
 }
 
@@ -542,22 +500,19 @@ void ResultsH5Writer::finish(const CampaignMetadata& metadata) {
     write_u64_attribute(root, "samples_per_line", metadata.samples_per_line);
     write_strings_attribute(root, "line_order", lines_declared_.empty() ? lines_written_ : lines_declared_);
     root.close();
-    // Everything to the disk while the file is open: a full disk fails here, where the file
-    // can still be closed (into memory), not inside the close (which would leave it half
-    // closed: io/hdf5_errors.hpp).
-    file_->guard.require_room_for_flush(file_->file.getId());
-    if (!file_->guard.failed()) file_->file.flush(H5F_SCOPE_GLOBAL);
   } catch (const H5::Exception& error) {
-    file_->guard.abandon();
-    rethrow_hdf5(partial, error, file_->guard);
+    file_->out.rethrow(error);
   }
-  // The file's last metadata reach the disk here: a full disk may show only now.
-  const bool write_failed = file_->guard.failed();
-  const std::string reason = file_->guard.reason();
-  if (!close_or_release(file_) || write_failed) {
+  // The room checked, everything flushed, the file closed; the file's last metadata reach the
+  // disk here, so a full disk may show only now.
+  try {
+    file_->out.close();
+  } catch (const InputError&) {
+    file_.reset();
     std::remove(partial.c_str());
-    throw WriteError(partial, "write failed: " + (reason.empty() ? std::string("HDF5 could not close the file") : reason));
+    throw;
   }
+  file_.reset();
   try {
     check_can_write(path_, overwrite_);  // a file that appeared meanwhile is not replaced silently
   } catch (const InputError&) {
@@ -569,10 +524,8 @@ void ResultsH5Writer::finish(const CampaignMetadata& metadata) {
 
 ResultsH5Writer::~ResultsH5Writer() {
   if (!file_) return;
-  hdf5::use_error_handler();  // the destructor may run on another thread than the writes
   const std::string partial = file_->partial;
-  file_->guard.abandon();    // not kept: what HDF5 still flushes goes to memory, never to a full disk
-  close_or_release(file_);  // never throws; the file is removed either way
+  file_.reset();  // hdf5::OutputFile closes it into memory, never throwing
   std::remove(partial.c_str());
 }
 
@@ -646,9 +599,9 @@ void ResultsH5Writer::write_table(const std::string& path, const std::vector<Ext
     write_strings_attribute(dataset, "column_units", units);
     attach_dimension(dataset, index_dimension(group, leaf + "_row", rows), 0);
   } catch (const H5::Exception& error) {
-    rethrow_hdf5(file_->partial, error, file_->guard);
+    file_->out.rethrow(error);
   }
-  throw_if_failed(file_->partial, file_->guard);
+  file_->out.throw_if_failed();
 }
 
 namespace {
@@ -673,9 +626,9 @@ void ResultsH5Writer::write_array(const std::string& path, const std::vector<dou
     write_array_at(file_->file, path, H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, std::span<const double>(values),
                    unit, dimension);
   } catch (const H5::Exception& error) {
-    rethrow_hdf5(file_->partial, error, file_->guard);
+    file_->out.rethrow(error);
   }
-  throw_if_failed(file_->partial, file_->guard);
+  file_->out.throw_if_failed();
 }
 
 void ResultsH5Writer::write_array(const std::string& path, const std::vector<std::int32_t>& values, const std::string& unit,
@@ -686,9 +639,9 @@ void ResultsH5Writer::write_array(const std::string& path, const std::vector<std
     write_array_at(file_->file, path, H5::PredType::STD_I32LE, H5::PredType::NATIVE_INT32,
                    std::span<const std::int32_t>(values), unit, dimension);
   } catch (const H5::Exception& error) {
-    rethrow_hdf5(file_->partial, error, file_->guard);
+    file_->out.rethrow(error);
   }
-  throw_if_failed(file_->partial, file_->guard);
+  file_->out.throw_if_failed();
 }
 
 namespace {
@@ -716,9 +669,9 @@ void ResultsH5Writer::write_attribute(const std::string& path, const std::string
   try {
     write_on_object(file_->file, path, [&](H5::H5Object& object) { write_string_attribute(object, name, value); });
   } catch (const H5::Exception& error) {
-    rethrow_hdf5(file_->partial, error, file_->guard);
+    file_->out.rethrow(error);
   }
-  throw_if_failed(file_->partial, file_->guard);
+  file_->out.throw_if_failed();
 }
 
 void ResultsH5Writer::write_attribute(const std::string& path, const std::string& name, double value) {
@@ -727,9 +680,9 @@ void ResultsH5Writer::write_attribute(const std::string& path, const std::string
   try {
     write_on_object(file_->file, path, [&](H5::H5Object& object) { write_f64_attribute(object, name, value); });
   } catch (const H5::Exception& error) {
-    rethrow_hdf5(file_->partial, error, file_->guard);
+    file_->out.rethrow(error);
   }
-  throw_if_failed(file_->partial, file_->guard);
+  file_->out.throw_if_failed();
 }
 
 }  // namespace growthuq
