@@ -105,9 +105,10 @@ void check_folder_of(const std::string& path, Folder folder) {
   if (parent.empty()) parent = ".";
   std::error_code error;
   if (folder == Folder::created_if_missing) {
-    while (!fs::exists(parent, error) && parent.has_relative_path() && parent.has_parent_path() &&
-           parent.parent_path() != parent) {
-      parent = parent.parent_path();
+    while (!fs::exists(parent, error)) {
+      const fs::path up = parent.parent_path();
+      if (up == parent) break;  // the root
+      parent = up.empty() ? fs::path(".") : up;
     }
   }
   const fs::file_status status = fs::status(parent, error);
