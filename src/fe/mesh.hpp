@@ -63,8 +63,9 @@ void validate_closed_surface(const TriangleMesh& mesh, const std::string& where)
 
 // The shell's bending element (bending.hpp) interpolates each face's three vertices and the far
 // vertex of each neighbour across its edges: six different vertices. InputError "<where>: face
-// F: two neighbouring faces share their far vertex V: ..." where two neighbours share it (every
-// face of a tetrahedron), before the simulation (which failed part way without naming the file).
+// F: two neighbouring faces share their far vertex V: ..." where two neighbours share it (around
+// a vertex of only three faces, as every vertex of a tetrahedron), before the simulation (whose
+// element failed without naming the file: "the six vertices ... lie on one conic").
 // `mesh` must be a validated closed surface.
 void require_bending_stencils(const TriangleMesh& mesh, const std::string& where);
 

@@ -262,8 +262,8 @@ void require_bending_stencils(const TriangleMesh& mesh, const std::string& where
       const int shared = far[0] == far[1] || far[0] == far[2] ? far[0] : far[1];
       throw InputError(where + ": face " + std::to_string(f),
                        "two neighbouring faces share their far vertex " + std::to_string(shared) +
-                           ": the bending element needs six different vertices around each face (expected a finer "
-                           "closed surface; a tetrahedron is too coarse)");
+                           ": the bending element needs six different vertices around each face (expected every "
+                           "vertex in at least four faces; a tetrahedron has none)");
     }
   }
 }

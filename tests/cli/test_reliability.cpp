@@ -416,6 +416,7 @@ TEST_CASE("a mesh file beyond the generated meshes' 400 000 triangles is refused
 }
 
 TEST_CASE("a closed tetrahedron is refused naming its file and face: too coarse for the bending element") {
+  // Every vertex of a tetrahedron is in three faces: each face's neighbours share their far vertex.
   const ScratchDirectory scratch("mesh_tetrahedron");
   spit(scratch.root / "tetra.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
   const CliOutcome indent = run_in(scratch.root, cli({"indent", "--p-MPa", "0.3", "--E-MPa", "30", "--h-nm", "150", "--d0-um",
@@ -423,7 +424,7 @@ TEST_CASE("a closed tetrahedron is refused naming its file and face: too coarse 
                                                       "tetra.off", "--out", "c.csv", "--quiet"}));
   CHECK(indent.exit_code == 2);
   CHECK(indent.err == "growthuq indent: error: tetra.off: face 0: two neighbouring faces share their far vertex 3: the "
-                      "bending element needs six different vertices around each face (expected a finer closed surface; a "
-                      "tetrahedron is too coarse)\n");
+                      "bending element needs six different vertices around each face (expected every vertex in at least "
+                      "four faces; a tetrahedron has none)\n");
   CHECK(!fs::exists(scratch.root / "c.csv"));
 }
