@@ -172,7 +172,16 @@ void read_shell_fe_section(const IniDocument& document, const IniSection& sectio
   }
   reader.reject_unknown_keys(
       "law, mesh, contact, substrate, bending, half_model, tube_length_um, probe_distance_um, force_window_uN, chunk_size");
-  options.validate(document.location(section.line));
+  try {
+    options.validate(document.location(section.line));
+  } catch (const InputError& error) {
+    // validate() knows only the section; a key's error ("probe_distance_um = '30': ...") is
+    // located at that key's own line when the section has it.
+    for (const IniEntry& entry : section.entries) {
+      if (error.problem().starts_with(entry.key + " = '")) throw InputError(reader.location(entry), error.problem());
+    }
+    throw;
+  }
 }
 
 void read_instrument_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {

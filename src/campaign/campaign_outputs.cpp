@@ -68,6 +68,28 @@ constexpr std::array<const char*, 7> result_names{results_h5_name,  samples_csv_
 // Where a run writes its results until they are all complete (output_dir/staging).
 std::string staging_directory(const std::string& output_dir) { return in_directory(output_dir, staging_name); }
 
+// check_output_directory once the directory is locked (by this run: no in-use test).
+void check_directory_contents(const Campaign& campaign, Overwrite overwrite) {
+  const std::string& directory = campaign.output_dir;
+  if (directory == "-") {
+    throw InputError(directory, "standard output cannot take a campaign's results (a folder of files): expected a "
+                                "directory name (./- for one named -)");
+  }
+  std::error_code error;
+  if (!fs::exists(directory, error)) return;
+  if (overwrite == Overwrite::refuse && has_checkpoint(directory)) {
+    throw InputError(directory, "holds an interrupted run; finish it with: growthuq run --resume " + shell_word(directory) +
+                                    " (or pass --force to start it again)");
+  }
+  if (overwrite == Overwrite::refuse) {
+    throw InputError(directory, "output directory already exists; choose another (--out DIR) or pass --force to replace its results");
+  }
+  if (!fs::is_directory(directory, error)) throw InputError(directory, "exists and is not a directory");
+  // Every file a run writes or removes there is a regular file or absent, so neither the
+  // writers nor the commit's removals touch a device, FIFO or folder of that name.
+  for (const char* name : result_names) check_can_write(in_directory(directory, name), Overwrite::allow);
+}
+
 // Locks the output directory (creating it if needed) and checks it. Returns whether the
 // directory was created by this run.
 bool prepare_output_directory(const Campaign& campaign, Overwrite overwrite, std::optional<OutputDirectoryLock>& lock) {
@@ -76,7 +98,7 @@ bool prepare_output_directory(const Campaign& campaign, Overwrite overwrite, std
   // Locked before anything is said about what it holds: the checkpoint of a live run is no
   // interrupted run to resume.
   if (directory != "-" && fs::is_directory(directory, error)) lock.emplace(directory);
-  check_output_directory(campaign, overwrite);
+  check_directory_contents(campaign, overwrite);
   if (fs::exists(directory, error)) {
     fs::remove_all(staging_directory(directory), error);  // what a killed run had staged
     return false;
@@ -159,6 +181,7 @@ class OutputObserver final : public RunObserver {
   // The writers, in the staging folder (commit_staged_results moves their files out).
   void open(const PreparedCampaign& campaign) {
     const Campaign& c = campaign.campaign();
+    staging_is_ours_ = true;  // called only once the output directory is locked by this run
     std::error_code error;
     fs::create_directories(staging_, error);
     if (error) throw WriteError(staging_, "cannot create the folder the results are written to: " + error.message());
@@ -259,14 +282,15 @@ class OutputObserver final : public RunObserver {
   const std::vector<QuantitySummary>& summaries() const { return summaries_; }
 
   // After a failure or a stop: closes the writers, which remove their .partial files, and
-  // removes what was staged (coordinator).
+  // removes what was staged (coordinator). A run that failed before open() (refused by the lock
+  // or by the directory checks) staged nothing: the staging folder there may be a live run's.
   void abandon(bool coordinator) {
     progress_.stopped();
     if (writer_.joinable()) writer_.join();
     samples_.reset();
     h5_.reset();
     std::error_code ignored;
-    if (coordinator) fs::remove_all(staging_, ignored);
+    if (coordinator && staging_is_ours_) fs::remove_all(staging_, ignored);
   }
 
  private:
@@ -290,6 +314,7 @@ class OutputObserver final : public RunObserver {
   const PreparedCampaign& campaign_;
   std::ostream& log_;
   std::string staging_ = staging_directory(campaign_.campaign().output_dir);
+  bool staging_is_ours_ = false;  // open() ran: this run holds the lock and made staging_
   Progress progress_;
   std::optional<SamplesCsvWriter> samples_;
   std::optional<ResultsH5Writer> h5_;
@@ -317,24 +342,10 @@ class OutputObserver final : public RunObserver {
 }  // namespace
 
 void check_output_directory(const Campaign& campaign, Overwrite overwrite) {
-  const std::string& directory = campaign.output_dir;
-  if (directory == "-") {
-    throw InputError(directory, "standard output cannot take a campaign's results (a folder of files): expected a "
-                                "directory name (./- for one named -)");
-  }
   std::error_code error;
-  if (!fs::exists(directory, error)) return;
-  if (overwrite == Overwrite::refuse && has_checkpoint(directory)) {
-    throw InputError(directory, "holds an interrupted run; finish it with: growthuq run --resume " + shell_word(directory) +
-                                    " (or pass --force to start it again)");
-  }
-  if (overwrite == Overwrite::refuse) {
-    throw InputError(directory, "output directory already exists; choose another (--out DIR) or pass --force to replace its results");
-  }
-  if (!fs::is_directory(directory, error)) throw InputError(directory, "exists and is not a directory");
-  // Every file a run writes or removes there is a regular file or absent, so neither the
-  // writers nor the commit's removals touch a device, FIFO or folder of that name.
-  for (const char* name : result_names) check_can_write(in_directory(directory, name), Overwrite::allow);
+  // A live run's checkpoint is no interrupted run to resume, and its directory is not to reuse.
+  if (campaign.output_dir != "-" && fs::is_directory(campaign.output_dir, error)) refuse_if_in_use(campaign.output_dir);
+  check_directory_contents(campaign, overwrite);
 }
 
 CampaignOutcome run_campaign_with_outputs(const PreparedCampaign& campaign, Pool& pool, const OutputSettings& settings,

@@ -60,10 +60,11 @@ inline constexpr const char* results_h5_name = "results.h5";
 inline constexpr const char* staging_name = "staging";
 
 // What a run checks of campaign.output_dir before it creates it or writes there, without
-// touching it (`growthuq check`): InputError naming it when it exists and overwrite is refuse
-// (suggesting --resume when it holds an interrupted run), when it exists and is no directory,
-// when a result file there would replace something that is not a regular file, or when it is
-// "-" (standard output, which other commands take for a result file).
+// touching it (`growthuq check`, and `growthuq run` before it prepares the campaign): InputError
+// naming it when a live run holds it (the lock's "is in use" message), when it exists and
+// overwrite is refuse (suggesting --resume when it holds an interrupted run), when it exists and
+// is no directory, when a result file there would replace something that is not a regular file,
+// or when it is "-" (standard output, which other commands take for a result file).
 void check_output_directory(const Campaign& campaign, Overwrite overwrite);
 
 // Every process calls it. Rank 0 creates campaign.output_dir if needed, locks it for the whole

@@ -39,7 +39,24 @@ bool same_file(int descriptor, const std::string& path) {
          opened.st_ino == named.st_ino;
 }
 
+InputError in_use(const std::string& directory, const std::string& holder, const std::string& lock_file) {
+  return InputError(directory, "is in use by another growthuq run (" + holder + ", lock file " + lock_file +
+                                   "): wait for it to end or stop it; two runs in one output directory would mix their files");
+}
+
 }  // namespace
+
+void refuse_if_in_use(const std::string& directory) {
+  const std::string path = (std::filesystem::path(directory) / run_lock_name).string();
+  const int descriptor = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+  if (descriptor < 0) return;  // no lock file: no live run (and nothing is created here)
+  if (::flock(descriptor, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK) {
+    const std::string holder = holder_of(descriptor);
+    ::close(descriptor);
+    throw in_use(directory, holder, path);
+  }
+  ::close(descriptor);  // releases the shared lock taken for the test
+}
 
 OutputDirectoryLock::OutputDirectoryLock(const std::string& directory)
     : path_((std::filesystem::path(directory) / run_lock_name).string()) {
@@ -52,11 +69,7 @@ OutputDirectoryLock::OutputDirectoryLock(const std::string& directory)
       const int error = errno;
       const std::string holder = holder_of(descriptor);
       ::close(descriptor);
-      if (error == EWOULDBLOCK) {
-        throw InputError(directory, "is in use by another growthuq run (" + holder + ", lock file " + path_ +
-                                        "): wait for it to end or stop it; two runs in one output directory would "
-                                        "mix their files");
-      }
+      if (error == EWOULDBLOCK) throw in_use(directory, holder, path_);
       // A file system without locks (some network mounts): refused rather than unguarded.
       errno = error;
       throw WriteError(path_, "cannot lock the output directory: " + system_reason());

@@ -12,6 +12,11 @@ namespace growthuq {
 
 inline constexpr const char* run_lock_name = "run.lock";
 
+// Without taking the lock or creating anything: the InputError the lock gives when a live run
+// holds `directory` (the checks made before the work, and `growthuq check`, say "in use" rather
+// than "already exists" or "holds an interrupted run").
+void refuse_if_in_use(const std::string& directory);
+
 class OutputDirectoryLock {
  public:
   // Locks `directory` (which must exist), writing "pid P on host H" into its lock file.

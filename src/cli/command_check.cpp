@@ -124,8 +124,10 @@ int run_check(const Arguments& arguments) {
   Campaign campaign = read_campaign(campaign_path);
   const CampaignOverrides overrides = flags.overrides(values, location);
   apply_overrides(campaign, overrides);
+  // Before preparing: a raw-data campaign's curve fits take seconds, an output directory that
+  // refuses the run is known at once.
+  check_output_directory(campaign, force ? Overwrite::allow : Overwrite::refuse);
   const PreparedCampaign prepared(std::move(campaign));
-  check_output_directory(prepared.campaign(), force ? Overwrite::allow : Overwrite::refuse);
   const RunFootprint footprint = estimate_run_footprint(run_shape(prepared, true));
   const MachineRoom room = machine_room(1, prepared.campaign().output_dir);
   // Named where the count was given, as the run names it.

@@ -169,6 +169,18 @@ int run_fit(const Arguments& arguments) {
                                      ": expected at least two measurements");
   }
 
+  // A fraction (einf) outside [0, 1) is no tube's: refused as a raw-data line refuses it
+  // (rawdata/raw_line_fit.cpp), before any law is fitted to it.
+  if (const Quantity* quantity = find_quantity(target.variable); quantity && quantity->dimension == Dimension::fraction) {
+    for (std::size_t row = 0; row < data.size(); ++row) {
+      const double si = data[row] * target.unit->to_si;
+      if (!(si >= 0.0 && si < 1.0)) {
+        throw_bad_value(table.row_location(row), "column " + options.column, table.rows[row][table.column_index(options.column)],
+                        "a rescaled equilibrium modulus in [0, 1) (as a fraction; [0, 100) in %)");
+      }
+    }
+  }
+
   // The first non-positive value rules out the positive laws: an error if one was asked for,
   // otherwise those laws are skipped with a note.
   std::optional<std::size_t> non_positive;

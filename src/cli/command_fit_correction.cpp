@@ -139,7 +139,14 @@ int run_fit_correction(const Arguments& arguments) {
   check_can_write(out, overwrite);
   if (!errors.empty()) check_can_write(errors, overwrite);
   const std::vector<TrainingPoint> points = read_training_csv(training);
-  const Correction correction = fit_correction(points, ShellFeOptions{}, Instrument{}.poisson_ratio);
+  // The fit's refusals (too few usable rows, collinear groups) are the training file's.
+  const Correction correction = [&] {
+    try {
+      return fit_correction(points, ShellFeOptions{}, Instrument{}.poisson_ratio);
+    } catch (const InputError& error) {
+      throw InputError(training, error.problem());
+    }
+  }();
   print("fitted", errors_of(points, correction, false));
   print("held out", errors_of(points, correction, true));
   const CrossValidation cv = cross_validate(points, Instrument{}.poisson_ratio);
@@ -148,12 +155,13 @@ int run_fit_correction(const Arguments& arguments) {
             << " within 2 % in p and E; larger of the two errors rms "
             << percent(cv.predictions ? std::sqrt(cv.sum_squares / cv.predictions) : 0.0) << ", largest " << percent(cv.largest)
             << "\n";
-  write_file_atomically(out, correction_source(correction), overwrite);
+  // The coefficients and their error table commit together or not at all.
+  std::vector<FileContent> results;
+  if (!errors.empty()) results.push_back({errors, errors_table(points, correction)});
+  results.push_back({out, correction_source(correction)});
+  write_files_together(results, overwrite);
   std::cout << "wrote " << out << " (" << correction.training_points << " fitted rows)\n";
-  if (!errors.empty()) {
-    write_file_atomically(errors, errors_table(points, correction), overwrite);
-    std::cout << "wrote " << errors << "\n";
-  }
+  if (!errors.empty()) std::cout << "wrote " << errors << "\n";
   return 0;
 }
 

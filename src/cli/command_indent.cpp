@@ -146,8 +146,15 @@ int run_indent(const Arguments& arguments) {
     const double radius = i < curve.contact_radius.size() ? curve.contact_radius[i] : 0.0;
     writer.add_row({format_double(curve.depth[i] * 1e6), format_double(curve.force[i] * 1e6), format_double(radius * 1e6)});
   }
-  write_file_atomically(flags.out, writer.text(), overwrite);
+  // The curve and its field commit together: the curve is written in full (a full disk shows
+  // here) but renamed into place only after the field's files are, so a field that fails leaves
+  // no curve behind (its partial file goes with `csv`).
+  check_can_write(flags.out, overwrite);
+  PartialFile csv(flags.out);
+  csv.write(writer.text());
+  csv.close();
   if (!flags.field.empty() && !curve.field.faces.empty()) write_shell_field(curve.field, flags.field, overwrite);
+  csv.commit();
 
   std::cout << "# finite-element shell: " << describe(options) << ", rho = " << flags.instrument.rho_um
             << " um, nu = " << flags.instrument.nu << "\n";

@@ -193,8 +193,10 @@ int run_relax(const Arguments& arguments) {
 
   const std::string distributions =
       options.distributions_out.empty() ? std::string() : distributions_text(fits, options.curves);
-  write_result(options.out, fits_csv(fits, options.analysis.terms), options.overwrite);
-  if (!options.distributions_out.empty()) write_result(options.distributions_out, distributions, options.overwrite);
+  // fits.csv and the fitted distributions commit together or not at all.
+  std::vector<FileContent> results{{options.out, fits_csv(fits, options.analysis.terms)}};
+  if (!options.distributions_out.empty()) results.push_back({options.distributions_out, distributions});
+  write_results_together(results, options.overwrite);
   const bool to_stdout = is_standard_output(options.out) || is_standard_output(options.distributions_out);
   print_summary(fits, options, to_stdout ? std::cerr : std::cout);
   return 0;

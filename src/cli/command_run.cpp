@@ -117,6 +117,9 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
     Campaign campaign = read_campaign_on_pool(options.campaign, pool);
     const CampaignOverrides overrides = options.flags.overrides(values, location);
     apply_overrides(campaign, overrides);
+    // The output directory is checked again under its lock (campaign_outputs.hpp); here, before
+    // a raw-data campaign's curve fits and the designs, so a refusal comes at once.
+    on_coordinator(pool, [&] { check_output_directory(campaign, settings.overwrite); });
     prepared.emplace(std::move(campaign), pool, settings.progress, std::cerr);
     settings.command_line = command_line_of(arguments);
     if (!options.no_checkpoint) {
@@ -136,8 +139,9 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
     const std::string where = resuming ? checkpoint_manifest_path(options.resume) : from_flag ? std::string(location) : options.campaign;
     require_room(estimate_run_footprint(shape), machine_room(pool.processes_on_this_machine(), prepared->campaign().output_dir),
                  where, resuming ? "samples" : from_flag ? "--samples" : "[campaign] samples");
-    // Finite-element samples take minutes each: how long the run will take, before it starts.
-    if (const auto time = estimate_shell_fe_time(*prepared); time && settings.progress != ProgressMode::none) {
+    // Finite-element samples take minutes each: how long the run will take, before it starts,
+    // with --quiet too (it is no progress report: a run of days must not start without a word).
+    if (const auto time = estimate_shell_fe_time(*prepared)) {
       std::string text = describe_shell_fe_time(*time, pool.size());
       // The checkpoint's finished samples are read later, by the pool: the count above is the
       // whole run's, so for a resumed run it bounds the time from above.
@@ -178,7 +182,7 @@ int run_run(const Arguments& arguments) {
   options.flags.declare(described);
   described.add_options()
       ("force", po::bool_switch(&options.force), "reuse an existing output directory, replacing its results")
-      ("quiet", po::bool_switch(&options.quiet), "no progress on stderr")
+      ("quiet", po::bool_switch(&options.quiet), "no progress on stderr (a finite-element time estimate is still printed)")
       ("summary-only", po::bool_switch(&options.summary_only),
        "print only the summary table and kappa on stdout, not each line's input correlation, analysis and "
        "raw-data fits (for campaigns of many lines; results.h5 keeps them)")

@@ -171,7 +171,7 @@ int run_synth(const Arguments& arguments) {
     const auto line_start = std::chrono::steady_clock::now();
     const std::vector<SynthFile> files = synthesize_line(truth, settings, command);
     const fs::path folder = fs::path(options.out) / truth.name;
-    for (const SynthFile& file : files) check_can_write((folder / file.name).string(), overwrite);
+    for (const SynthFile& file : files) check_can_write((folder / file.name).string(), overwrite, Folder::created_if_missing);
     std::error_code error;
     fs::create_directories(folder, error);
     if (error) throw InputError(folder.string(), "cannot create the folder: " + error.message());

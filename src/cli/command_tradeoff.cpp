@@ -129,7 +129,7 @@ CampaignOverrides overrides_of(const TradeoffOptions& options, const po::variabl
 std::optional<fs::path> prepare_csv_path(const std::string& path, Overwrite overwrite) {
   std::error_code error;
   if (fs::is_directory(path, error)) throw InputError(path, "is a directory; --out names the table file (e.g. trade.csv)");
-  check_can_write(path, overwrite);
+  check_can_write(path, overwrite, Folder::created_if_missing);
   const fs::path folder = fs::path(path).parent_path();
   if (folder.empty() || fs::exists(folder, error)) return std::nullopt;
   fs::create_directories(folder, error);
@@ -199,8 +199,9 @@ int run_tradeoff_command(const TradeoffOptions& options, const po::variables_map
   if (!fe_counts.empty()) series.push_back({Fidelity::shell_fe, fe_counts});
   validate_series(campaign, series, pool);
   // Finite-element samples take seconds to minutes each: how long they will take, before the
-  // runs start.
-  if (!fe_counts.empty() && pool.is_coordinator() && !options.quiet) {
+  // runs start, with --quiet too (it is no progress report: runs of days must not start
+  // without a word).
+  if (!fe_counts.empty() && pool.is_coordinator()) {
     std::cerr << "growthuq tradeoff: " << describe_shell_fe_time(shell_fe_runs_time(campaign, fe_counts), pool.size())
               << std::flush;
   }
@@ -258,7 +259,7 @@ int run_tradeoff(const Arguments& arguments) {
       ("force", po::bool_switch(&options.force), "overwrite an existing table")
       ("lines", po::value(&options.lines), "comma-separated subset of the campaign's lines (keep the reference line)")
       ("seed", po::value(&options.seed), "campaign seed, 0 to 2^64 - 1 (overrides [campaign] seed)")
-      ("quiet", po::bool_switch(&options.quiet), "no progress on stderr");
+      ("quiet", po::bool_switch(&options.quiet), "no progress on stderr (the finite-element time estimate is still printed)");
   po::positional_options_description positional;
   positional.add("campaign", 1);
   po::variables_map values;

@@ -4,6 +4,7 @@
 #include <array>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <iostream>
@@ -12,6 +13,7 @@
 
 #include "commands.hpp"
 #include "core/interrupt.hpp"
+#include "io/hdf5_exit.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/printable.hpp"
 #include "options.hpp"
@@ -62,9 +64,7 @@ void print_usage(std::ostream& out) {
   }
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int dispatch(int argc, char** argv) {
   // A command killed by a signal leaves none of its partial files (core/interrupt.hpp).
   growthuq::remove_partial_files_on_fatal_signals();
   if (argc < 2) {
@@ -114,4 +114,20 @@ int main(int argc, char** argv) {
   std::cerr << "growthuq: unknown command '" << growthuq::printable(name) << "'\n\n";
   print_usage(std::cerr);
   return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int status = dispatch(argc, argv);
+  // An HDF5 file that could not be closed (a full disk during its last flush) would crash
+  // HDF5's clean-up at exit (SIGSEGV after the message): the process ends without it, its
+  // streams flushed, its status kept (io/hdf5_errors.hpp).
+  if (growthuq::hdf5::file_left_half_closed()) {
+    std::cout.flush();
+    std::cerr.flush();
+    std::fflush(nullptr);
+    std::_Exit(status);
+  }
+  return status;
 }

@@ -134,7 +134,11 @@ bool parse_arguments(const Arguments& arguments, std::string_view command, std::
   options.add_options()("help,h", "print this help and exit")("version", "print the version and exit");
   refuse_option_as_value(arguments, command, options);
   try {
-    po::store(po::command_line_parser(arguments).options(options).positional(positional).run(), values);
+    // Boost's default style takes an unambiguous prefix for the whole option (`--sam 10` as
+    // --samples, `tradeoff --samples` as --samples-list): a typo then runs something else. Off, so
+    // only full names (and the declared one-letter forms) are accepted.
+    const int style = po::command_line_style::default_style & ~po::command_line_style::allow_guessing;
+    po::store(po::command_line_parser(arguments).options(options).positional(positional).style(style).run(), values);
     if (values.count("help")) {
       const std::string usage_start = "usage: growthuq " + std::string(command) + " ";
       std::cout << wrapped_help(usage, usage_start, std::string(usage_start.size(), ' ')) << "\n\n"

@@ -19,6 +19,20 @@ void write_result(const std::string& path, std::string_view content, Overwrite o
   write_file_atomically(path, content, overwrite);
 }
 
+void write_results_together(const std::vector<FileContent>& results, Overwrite overwrite) {
+  std::vector<FileContent> files;
+  const FileContent* printed = nullptr;
+  for (const FileContent& result : results) {
+    if (is_standard_output(result.path)) {
+      printed = &result;
+    } else {
+      files.push_back(result);
+    }
+  }
+  write_files_together(files, overwrite);
+  if (printed) write_result(printed->path, printed->content, overwrite);
+}
+
 std::ostream& report_stream(std::string_view result_path) {
   return is_standard_output(result_path) ? std::cerr : std::cout;
 }

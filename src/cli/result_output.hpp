@@ -7,6 +7,7 @@
 #include <iosfwd>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "growthuq/io/output_file.hpp"
 
@@ -21,6 +22,13 @@ void check_result_target(const std::string& path, Overwrite overwrite);
 // The result written atomically to `path` (write_file_atomically), or printed on standard
 // output for "-".
 void write_result(const std::string& path, std::string_view content, Overwrite overwrite);
+
+// A command's results written together: every file in full to its partial file first, then
+// all renamed into place (write_files_together), so a failure (a missing folder, a full disk)
+// leaves none of them, never the first without the second. One of them may be "-" (standard
+// output), printed once the files are in place. In the order given: a file naming the others
+// last.
+void write_results_together(const std::vector<FileContent>& results, Overwrite overwrite);
 
 // Where the command's report goes: standard error while its result takes standard output,
 // standard output otherwise.

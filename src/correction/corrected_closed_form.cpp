@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <utility>
 
@@ -223,6 +224,22 @@ Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOp
   // Householder QR with column pivoting: the least-squares solution without forming the normal
   // equations (whose condition number is the square of the design's).
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design);
+  // Rows whose groups move together (one probe radius for every row) leave the polynomial's
+  // terms collinear: least squares then returns huge coefficients that cancel (+-6e12 were
+  // written), right on the rows and wild between them. Refused by the pivoted R's diagonal: its
+  // smallest entry relative to its largest estimates the design's reciprocal condition: 0.019
+  // to 0.023 for the shipped training set and its folds, 3.7e-17 with one probe radius for
+  // every row (measured); 1e-9 lies far from both.
+  const Eigen::VectorXd pivots = qr.matrixR().diagonal().cwiseAbs();
+  const double conditioning = pivots.minCoeff() / pivots.maxCoeff();
+  if (!(conditioning > 1e-9)) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2g", conditioning);
+    throw InputError("fit-correction", std::to_string(rows) + " fitting rows whose groups are collinear (the design's "
+                                           "reciprocal condition is " + std::string(text) +
+                                           ", below 1e-9): expected rows that vary d/d0, h/d0, rho/d0, F_top/(k d0) and a/d0 "
+                                           "independently (e.g. more than one probe radius)");
+  }
   const Eigen::VectorXd modulus_coefficients = qr.solve(modulus);
   const Eigen::VectorXd ratio_coefficients = qr.solve(ratio);
   for (std::size_t t = 0; t < correction_terms; ++t) {

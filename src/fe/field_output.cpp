@@ -14,6 +14,7 @@
 
 #include "core/interrupt.hpp"
 #include "growthuq/core/error.hpp"
+#include "io/hdf5_output_file.hpp"
 #include "growthuq/core/numbers.hpp"
 
 namespace growthuq {
@@ -81,27 +82,33 @@ void check_field(const ShellFeField& field, const std::string& path) {
 }
 
 void write_data(const ShellFeField& field, const std::string& partial) {
-  H5::Exception::dontPrint();  // errors reach the user as one InputError line
+  // Through hdf5::OutputFile: one line naming the file, never HDF5's diagnostics or a crash,
+  // also on a full disk (io/hdf5_output_file.hpp).
   try {
-    H5::H5File file(partial, H5F_ACC_TRUNC);
-    H5::Group mesh = file.createGroup("mesh"), vertex = file.createGroup("vertex"), face = file.createGroup("face");
-    const std::vector<double> reference = rows_of(field.reference), deformed = rows_of(field.deformed);
-    write_rows(mesh, "reference", reference, 3);
-    write_rows(mesh, "deformed", deformed, 3);
-    std::vector<std::int64_t> faces;
-    for (const auto& f : field.faces) faces.insert(faces.end(), f.begin(), f.end());
-    write_indices(mesh, "faces", faces);
-    std::vector<double> displacement(deformed.size());
-    for (std::size_t i = 0; i < deformed.size(); ++i) displacement[i] = deformed[i] - reference[i];
-    write_rows(vertex, "displacement", displacement, 3);
-    write_rows(face, "sigma1", scaled(field.sigma1, MPa), 1);
-    write_rows(face, "sigma2", scaled(field.sigma2, MPa), 1);
-    write_rows(face, "von_mises", scaled(field.von_mises, MPa), 1);
-    write_rows(face, "thickness_stretch", field.thickness_stretch, 1);
-    file.close();
-  } catch (const H5::Exception& error) {
+    hdf5::OutputFile out(partial);
+    try {
+      H5::H5File& file = out.file();
+      H5::Group mesh = file.createGroup("mesh"), vertex = file.createGroup("vertex"), face = file.createGroup("face");
+      const std::vector<double> reference = rows_of(field.reference), deformed = rows_of(field.deformed);
+      write_rows(mesh, "reference", reference, 3);
+      write_rows(mesh, "deformed", deformed, 3);
+      std::vector<std::int64_t> faces;
+      for (const auto& f : field.faces) faces.insert(faces.end(), f.begin(), f.end());
+      write_indices(mesh, "faces", faces);
+      std::vector<double> displacement(deformed.size());
+      for (std::size_t i = 0; i < deformed.size(); ++i) displacement[i] = deformed[i] - reference[i];
+      write_rows(vertex, "displacement", displacement, 3);
+      write_rows(face, "sigma1", scaled(field.sigma1, MPa), 1);
+      write_rows(face, "sigma2", scaled(field.sigma2, MPa), 1);
+      write_rows(face, "von_mises", scaled(field.von_mises, MPa), 1);
+      write_rows(face, "thickness_stretch", field.thickness_stretch, 1);
+    } catch (const H5::Exception& error) {
+      out.rethrow(error);
+    }
+    out.close();
+  } catch (const InputError&) {
     std::remove(partial.c_str());
-    throw InputError(partial, "HDF5 write failed in " + error.getFuncName() + ": " + error.getDetailMsg());
+    throw;
   }
 }
 

@@ -113,6 +113,7 @@ Setup make_setup(const ForwardProblem& p, double focus_distance) {
   } else {
     s.half = false;
     s.mesh = read_mesh_file(p.mesh_file);
+    require_bending_stencils(s.mesh, p.mesh_file);  // named with its file, before the simulation
     s.fixed.assign(static_cast<std::size_t>(3 * nodes()), 0);
     Eigen::Index low = 0, high = 0, top = 0;
     s.mesh.positions.row(0).minCoeff(&low);

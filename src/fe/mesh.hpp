@@ -61,6 +61,14 @@ TriangleMesh read_mesh_file(const std::string& path);
 // The checks read_mesh_file applies, for a mesh from anywhere; `where` names it in messages.
 void validate_closed_surface(const TriangleMesh& mesh, const std::string& where);
 
+// The shell's bending element (bending.hpp) interpolates each face's three vertices and the far
+// vertex of each neighbour across its edges: six different vertices. InputError "<where>: face
+// F: two neighbouring faces share their far vertex V: ..." where two neighbours share it (around
+// a vertex of only three faces, as every vertex of a tetrahedron), before the simulation (whose
+// element failed without naming the file: "the six vertices ... lie on one conic").
+// `mesh` must be a validated closed surface.
+void require_bending_stencils(const TriangleMesh& mesh, const std::string& where);
+
 // Smallest and largest edge length, for reports and tests.
 struct EdgeLengthRange {
   double shortest = 0.0;

@@ -1,5 +1,7 @@
 #include "growthuq/io/output_file.hpp"
 
+#include <unistd.h>
+
 #include <array>
 #include <cerrno>
 #include <cstdio>
@@ -92,7 +94,41 @@ void refuse_special_file(const std::string& path) {
 
 }  // namespace
 
-void check_can_write(const std::string& path, Overwrite overwrite) {
+namespace {
+
+// InputError unless `path`'s folder (or, when it may be created, its nearest existing ancestor)
+// is a folder this process can create files in. Checked with the other output checks, before
+// any work: without it a missing folder showed only when the result was written, after minutes
+// of simulation.
+void check_folder_of(const std::string& path, Folder folder) {
+  fs::path parent = fs::path(path).parent_path();
+  if (parent.empty()) parent = ".";
+  std::error_code error;
+  if (folder == Folder::created_if_missing) {
+    while (!fs::exists(parent, error)) {
+      const fs::path up = parent.parent_path();
+      if (up == parent) break;  // the root
+      parent = up.empty() ? fs::path(".") : up;
+    }
+  }
+  const fs::file_status status = fs::status(parent, error);
+  if (status.type() == fs::file_type::not_found) {
+    throw InputError(path, "cannot be written: the folder " + parent.string() +
+                               " does not exist (expected an existing folder; create it first)");
+  }
+  if (status.type() != fs::file_type::directory && status.type() != fs::file_type::none) {
+    throw InputError(path, "cannot be written: " + parent.string() + " is not a folder");
+  }
+  // access() answers for this process's user (as root: only a read-only file system refuses).
+  if (status.type() == fs::file_type::directory && ::access(parent.c_str(), W_OK | X_OK) != 0) {
+    throw InputError(path, "cannot be written: the folder " + parent.string() + " is not writable (" +
+                               std::strerror(errno) + ")");
+  }
+}
+
+}  // namespace
+
+void check_can_write(const std::string& path, Overwrite overwrite, Folder folder) {
   // The commands that can print a result on stdout check "-" themselves (cli/result_output.hpp);
   // one reaching here would otherwise become a file called "-".
   if (path == "-") {
@@ -103,6 +139,7 @@ void check_can_write(const std::string& path, Overwrite overwrite) {
   if (overwrite == Overwrite::refuse && fs::exists(path, error)) {
     throw InputError(path, "already exists; choose another output or pass --force to overwrite");
   }
+  check_folder_of(path, folder);
 }
 
 void prepare_partial_file(const std::string& partial) {

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "core/interrupt.hpp"
+#include "hdf5_output_file.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/units.hpp"
 
@@ -326,37 +327,41 @@ std::vector<std::string> status_names() {
   return names;
 }
 
-[[noreturn]] void rethrow_hdf5(const std::string& file, const H5::Exception& error) {
-  throw WriteError(file, "HDF5 write failed in " + error.getFuncName() + ": " + error.getDetailMsg());
-}
-
 }  // namespace
 
+// The partial file: written through hdf5::OutputFile (no crash, no diagnostics on a full disk:
+// io/hdf5_output_file.hpp), removed by a signal that ends the process.
 struct ResultsH5Writer::File {
   std::string partial;
-  H5::H5File file;
+  hdf5::OutputFile out{partial};
   RemovedOnSignal removed_on_signal{partial};  // a kill leaves no results.h5.partial
+  H5::H5File& file = out.file();
 };
 
 ResultsH5Writer::ResultsH5Writer(std::string path, Overwrite overwrite)
     : path_(std::move(path)), overwrite_(overwrite) {
   check_can_write(path_, overwrite_);
   // Errors reach the user as one InputError line, not as HDF5's stack dump on stderr.
-  H5::Exception::dontPrint();
+  hdf5::use_error_handler();
   const std::string partial = path_ + ".partial";
   prepare_partial_file(partial);
   try {
-    file_ = std::make_unique<File>(partial, H5::H5File(partial, H5F_ACC_TRUNC));
-    create_untimed_group(file_->file, "lines", /*in_creation_order=*/true);
-  } catch (const H5::Exception& error) {
+    file_ = std::make_unique<File>(partial);
+    try {
+      create_untimed_group(file_->file, "lines", /*in_creation_order=*/true);
+    } catch (const H5::Exception& error) {
+      file_->out.rethrow(error);
+    }
+  } catch (const InputError&) {
     file_.reset();
     std::remove(partial.c_str());
-    throw WriteError(partial, "cannot create the HDF5 file (" + error.getDetailMsg() + ")");
+    throw;
   }
 }
 
 void ResultsH5Writer::declare_lines(const std::vector<std::string>& names) {
   if (!file_) throw std::logic_error("ResultsH5Writer::declare_lines after finish()");
+  hdf5::use_error_handler();  // per thread: results.h5 is written on a thread of its own
   if (!lines_written_.empty() || !lines_declared_.empty()) throw std::logic_error("ResultsH5Writer::declare_lines: too late");
   try {
     for (const std::string& name : names) {
@@ -364,14 +369,16 @@ void ResultsH5Writer::declare_lines(const std::vector<std::string>& names) {
       create_untimed_group(file_->file, "lines/" + name);
     }
   } catch (const H5::Exception& error) {
-    rethrow_hdf5(file_->partial, error);
+    file_->out.rethrow(error);
   }
+  file_->out.throw_if_failed();
   lines_declared_ = names;
 }
 
 void ResultsH5Writer::write_line(const LineResult& result, const std::vector<QuantitySummary>& summaries,
                                  const LineAnalysis& analysis) {
   if (!file_) throw std::logic_error("ResultsH5Writer::write_line after finish()");
+  hdf5::use_error_handler();  // per thread: results.h5 is written on a thread of its own
   check_line_name(result.name, file_->partial);
   for (const std::string& written : lines_written_) {
     if (written == result.name) throw_bad_value(file_->partial, "line", result.name, "each line once");
@@ -447,14 +454,16 @@ void ResultsH5Writer::write_line(const LineResult& result, const std::vector<Qua
     attach_dimension(loadings, label_dimension(analysis_group, "variable", variables, static_cast<std::size_t>(analysis.loadings.rows())), 0);
     attach_dimension(loadings, index_dimension(analysis_group, "component", static_cast<std::size_t>(analysis.loadings.cols())), 1);
   } catch (const H5::Exception& error) {
-    rethrow_hdf5(file_->partial, error);
+    file_->out.rethrow(error);
   }
+  file_->out.throw_if_failed();
   lines_written_.push_back(result.name);
   summaries_.insert(summaries_.end(), summaries.begin(), summaries.end());
 }
 
 void ResultsH5Writer::replace_summaries(const std::vector<QuantitySummary>& summaries) {
   if (!file_) throw std::logic_error("ResultsH5Writer::replace_summaries called after finish");
+  hdf5::use_error_handler();  // per thread: results.h5 is written on a thread of its own
   if (summaries.size() != summaries_.size()) throw std::invalid_argument("replace_summaries: not the rows written");
   try {
     for (const std::string& line : lines_written_) {
@@ -469,13 +478,15 @@ void ResultsH5Writer::replace_summaries(const std::vector<QuantitySummary>& summ
       if (!rows.empty()) dataset.write(summary_rows(rows).data(), summary_type());
     }
   } catch (const H5::Exception& error) {
-    rethrow_hdf5(file_->partial, error);
+    file_->out.rethrow(error);
   }
+  file_->out.throw_if_failed();
   summaries_ = summaries;
 }
 
 void ResultsH5Writer::finish(const CampaignMetadata& metadata) {
   if (!file_) throw std::logic_error("ResultsH5Writer::finish called twice");
+  hdf5::use_error_handler();  // per thread: results.h5 is written on a thread of its own
   const std::string partial = file_->partial;
   try {
     H5::Group root = file_->file.openGroup("/");
@@ -489,9 +500,17 @@ void ResultsH5Writer::finish(const CampaignMetadata& metadata) {
     write_u64_attribute(root, "samples_per_line", metadata.samples_per_line);
     write_strings_attribute(root, "line_order", lines_declared_.empty() ? lines_written_ : lines_declared_);
     root.close();
-    file_->file.close();
   } catch (const H5::Exception& error) {
-    rethrow_hdf5(partial, error);
+    file_->out.rethrow(error);
+  }
+  // The room checked, everything flushed, the file closed; the file's last metadata reach the
+  // disk here, so a full disk may show only now.
+  try {
+    file_->out.close();
+  } catch (const InputError&) {
+    file_.reset();
+    std::remove(partial.c_str());
+    throw;
   }
   file_.reset();
   try {
@@ -506,12 +525,7 @@ void ResultsH5Writer::finish(const CampaignMetadata& metadata) {
 ResultsH5Writer::~ResultsH5Writer() {
   if (!file_) return;
   const std::string partial = file_->partial;
-  try {
-    file_->file.close();
-  } catch (...) {
-    // Closing failed: the file is removed below either way.
-  }
-  file_.reset();
+  file_.reset();  // hdf5::OutputFile closes it into memory, never throwing
   std::remove(partial.c_str());
 }
 
@@ -541,6 +555,7 @@ std::pair<std::string, std::string> split_path(const std::string& path) {
 
 void ResultsH5Writer::write_table(const std::string& path, const std::vector<ExtraColumn>& columns) {
   if (!file_) throw std::logic_error("ResultsH5Writer::write_table after finish()");
+  hdf5::use_error_handler();  // per thread: results.h5 is written on a thread of its own
   // Row layout: each member 8 bytes (a char* for text, a double or an int64).
   std::size_t rows = 0;
   for (std::size_t c = 0; c < columns.size(); ++c) {
@@ -584,8 +599,9 @@ void ResultsH5Writer::write_table(const std::string& path, const std::vector<Ext
     write_strings_attribute(dataset, "column_units", units);
     attach_dimension(dataset, index_dimension(group, leaf + "_row", rows), 0);
   } catch (const H5::Exception& error) {
-    rethrow_hdf5(file_->partial, error);
+    file_->out.rethrow(error);
   }
+  file_->out.throw_if_failed();
 }
 
 namespace {
@@ -605,23 +621,27 @@ void write_array_at(H5::H5File& file, const std::string& path, const H5::PredTyp
 void ResultsH5Writer::write_array(const std::string& path, const std::vector<double>& values, const std::string& unit,
                                   const std::string& dimension) {
   if (!file_) throw std::logic_error("ResultsH5Writer::write_array after finish()");
+  hdf5::use_error_handler();  // per thread: results.h5 is written on a thread of its own
   try {
     write_array_at(file_->file, path, H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, std::span<const double>(values),
                    unit, dimension);
   } catch (const H5::Exception& error) {
-    rethrow_hdf5(file_->partial, error);
+    file_->out.rethrow(error);
   }
+  file_->out.throw_if_failed();
 }
 
 void ResultsH5Writer::write_array(const std::string& path, const std::vector<std::int32_t>& values, const std::string& unit,
                                   const std::string& dimension) {
   if (!file_) throw std::logic_error("ResultsH5Writer::write_array after finish()");
+  hdf5::use_error_handler();  // per thread: results.h5 is written on a thread of its own
   try {
     write_array_at(file_->file, path, H5::PredType::STD_I32LE, H5::PredType::NATIVE_INT32,
                    std::span<const std::int32_t>(values), unit, dimension);
   } catch (const H5::Exception& error) {
-    rethrow_hdf5(file_->partial, error);
+    file_->out.rethrow(error);
   }
+  file_->out.throw_if_failed();
 }
 
 namespace {
@@ -645,20 +665,24 @@ void write_on_object(H5::H5File& file, const std::string& path, Write write) {
 
 void ResultsH5Writer::write_attribute(const std::string& path, const std::string& name, const std::string& value) {
   if (!file_) throw std::logic_error("ResultsH5Writer::write_attribute after finish()");
+  hdf5::use_error_handler();  // per thread: results.h5 is written on a thread of its own
   try {
     write_on_object(file_->file, path, [&](H5::H5Object& object) { write_string_attribute(object, name, value); });
   } catch (const H5::Exception& error) {
-    rethrow_hdf5(file_->partial, error);
+    file_->out.rethrow(error);
   }
+  file_->out.throw_if_failed();
 }
 
 void ResultsH5Writer::write_attribute(const std::string& path, const std::string& name, double value) {
   if (!file_) throw std::logic_error("ResultsH5Writer::write_attribute after finish()");
+  hdf5::use_error_handler();  // per thread: results.h5 is written on a thread of its own
   try {
     write_on_object(file_->file, path, [&](H5::H5Object& object) { write_f64_attribute(object, name, value); });
   } catch (const H5::Exception& error) {
-    rethrow_hdf5(file_->partial, error);
+    file_->out.rethrow(error);
   }
+  file_->out.throw_if_failed();
 }
 
 }  // namespace growthuq

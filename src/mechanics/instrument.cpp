@@ -11,6 +11,10 @@
 namespace growthuq {
 namespace {
 
+// 1 mm: far above any indenting probe (tens of um at most), far below radii whose results
+// underflow.
+constexpr double max_probe_radius_m = 1e-3;
+
 // The number spelled by `entry`'s text, "inf" allowed when `infinite_allowed`; the field's
 // range message otherwise, so a typo and an out-of-range value read alike.
 double number_of(const InstrumentEntry& entry, InstrumentField field, bool infinite_allowed) {
@@ -24,7 +28,7 @@ double number_of(const InstrumentEntry& entry, InstrumentField field, bool infin
 
 std::string_view instrument_range(InstrumentField field) {
   switch (field) {
-    case InstrumentField::probe_radius: return "a probe radius in um, a finite number > 0";
+    case InstrumentField::probe_radius: return "a probe radius in um, > 0 and at most 1000";
     case InstrumentField::poisson_ratio: return "a Poisson ratio in [0, 0.5)";
     case InstrumentField::sensor_stiffness: return "a sensor stiffness in N/m, a number > 0 or inf (an ideal sensor)";
   }
@@ -33,7 +37,7 @@ std::string_view instrument_range(InstrumentField field) {
 
 bool in_instrument_range(InstrumentField field, double value) noexcept {
   switch (field) {
-    case InstrumentField::probe_radius: return std::isfinite(value) && value > 0.0;
+    case InstrumentField::probe_radius: return value > 0.0 && value <= max_probe_radius_m;
     case InstrumentField::poisson_ratio: return value >= 0.0 && value < 0.5;
     case InstrumentField::sensor_stiffness: return value > 0.0;  // false for NaN, true for +inf
   }

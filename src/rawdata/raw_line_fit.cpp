@@ -38,8 +38,26 @@ void refuse_gross_outliers(const CsvTable& table, const std::string& column, con
 
 // The values of one column, in its unit. Blank cells are tubes where the quantity was not
 // measured; anything else must be a number of the quantity's physical range.
+// A tube listed twice would count twice in the fit (and in the bootstrap's redraws): refused
+// naming both rows. Only for tables with a `tube` column (synth writes one; it is optional).
+void refuse_repeated_tubes(const CsvTable& table) {
+  if (!table.has_column("tube")) return;
+  const std::size_t column = table.column_index("tube");
+  std::map<std::string, std::size_t> first_row;
+  for (std::size_t row = 0; row < table.rows.size(); ++row) {
+    const std::string& id = table.rows[row][column];
+    if (id.empty()) continue;
+    const auto [at, inserted] = first_row.emplace(id, row);
+    if (!inserted) {
+      throw_bad_value(table.row_location(row), "tube", id,
+                      "each tube once (it is also " + table.row_location(at->second) + ")");
+    }
+  }
+}
+
 std::vector<double> read_measurement_column(const RawMeasurement& measurement) {
   const CsvTable table = read_csv(measurement.file);
+  refuse_repeated_tubes(table);
   const std::size_t column = table.column_index(measurement.column);
   const bool fraction = measurement.variable == "einf";
   std::vector<double> values;

@@ -1,6 +1,7 @@
 #include "growthuq/sampling/line_design.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <limits>
 #include <memory>
 #include <memory>
@@ -8,6 +9,7 @@
 #include <stdexcept>
 
 #include "growthuq/core/error.hpp"
+#include "growthuq/distributions/distribution.hpp"
 #include "growthuq/sampling/random_stream.hpp"
 #include "correlation/score_reordering.hpp"
 #include "core/large_buffer.hpp"
@@ -108,6 +110,38 @@ bool write_column(const DesignVariable& variable, detail::Mt19937_64Block& rando
   return stratum_values.strictly_increasing();
 }
 
+
+// The share of `distribution`'s draws that are <= 0, to within 1e-3 relative (0 when below
+// 1e-9): the u where its quantile crosses zero, by bisection (quantile is all a law offers).
+double share_not_positive(const Distribution& distribution) {
+  double low = 1e-9, high = 0.5;
+  if (quantile(distribution, low) > 0.0) return 0.0;
+  if (!(quantile(distribution, high) > 0.0)) return high;
+  while (high - low > 1e-3 * low) {
+    const double middle = 0.5 * (low + high);
+    (quantile(distribution, middle) > 0.0 ? high : low) = middle;
+  }
+  return low;
+}
+
+// Every sampled variable is a positive quantity (a stiffness, a thickness, a diameter, a time, a
+// fraction). A law that draws values <= 0 (uniform on (-1, 3), an empirical law holding a
+// negative value, a wide normal) is accepted (a deliberately wide law has its uses) but not
+// silently: such samples cannot be evaluated and are flagged.
+std::vector<std::string> nonpositive_law_warnings(const std::vector<DesignVariable>& variables) {
+  std::vector<std::string> warnings;
+  for (const DesignVariable& variable : variables) {
+    const double share = share_not_positive(variable.distribution);
+    if (share == 0.0) continue;
+    char percent[32];
+    std::snprintf(percent, sizeof percent, "%.3g", 100.0 * share);
+    warnings.push_back("warning: " + variable.name + ": " + percent + " % of the draws of its law " +
+                       describe(variable.distribution) +
+                       " are <= 0, which no tube has: those samples are flagged and left out of the statistics");
+  }
+  return warnings;
+}
+
 }  // namespace
 
 // What every column needs: for a correlated design, the score columns (row r = the sample
@@ -150,6 +184,7 @@ LineDesigner::LineDesigner(std::string_view line_name, std::vector<DesignVariabl
   prepared.variables = std::move(variables);
   prepared.options = options;
   for (const DesignVariable& variable : prepared.variables) outline_.names.push_back(variable.name);
+  outline_.warnings = nonpositive_law_warnings(prepared.variables);
   outline_.ranks.resize(m);
   outline_.values.resize(m);
   outline_.strictly_increasing.assign(m, 0);

@@ -102,9 +102,10 @@ TEST_CASE("fidelity and [shell_fe] mistakes: one error naming file, line, key, v
   CHECK(error_of(section + "geometry = sphere\n") ==
         file + ":14: unknown key 'geometry' in [shell_fe] (allowed: law, mesh, substrate, bending, half_model, tube_length_um, "
                "probe_distance_um, force_window_uN, chunk_size)");
-  // The probe must sit on the tube: a distance beyond its length is refused as the model refuses it.
+  // The probe must sit on the tube: a distance beyond its length is refused as the model refuses it,
+  // at the key's own line (15), not the section's (13).
   CHECK(error_of(section + "tube_length_um = 20\nprobe_distance_um = 30\n") ==
-        file + ":13: probe_distance_um = '30': expected the probe's distance behind the apex in [0, tube_length) um (default 10)");
+        file + ":15: probe_distance_um = '30': expected the probe's distance behind the apex in [0, tube_length) um (default 10)");
 }
 
 TEST_CASE("each fidelity plans its own turgor and modulus models, the rest alike") {

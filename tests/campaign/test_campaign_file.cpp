@@ -70,7 +70,7 @@ TEST_CASE("each mistake is one error naming file and line") {
   CHECK(error_of(replaced(valid, "seed = 7", "seed = -7")) == file + ":3: seed = '-7': expected a whole number from 0 to 18446744073709551615");
   CHECK(error_of(replaced(valid, "samples = 300", "samples = 0")) == file + ":4: samples = '0': expected a whole number from 1 to 4294967295");
   CHECK(error_of(replaced(valid, "outputs = p, E, eta, v", "outputs = p, turgor")).starts_with(file + ":5: outputs = 'turgor': expected quantities among k, h"));
-  CHECK(error_of(replaced(valid, "probe_radius_um = 0.5", "probe_radius_um = -1")) == file + ":8: probe_radius_um = '-1': expected a probe radius in um, a finite number > 0");
+  CHECK(error_of(replaced(valid, "probe_radius_um = 0.5", "probe_radius_um = -1")) == file + ":8: probe_radius_um = '-1': expected a probe radius in um, > 0 and at most 1000");
   // The instrument keys take exactly the values and give the messages of --rho-um, --nu, --k-sys
   // (mechanics/instrument.hpp): nu = 0.5 and 0.7 were accepted here before, like any nu in [0, 1).
   for (const char* nu : {"0.5", "0.7", "-0.1", "nan"}) {

@@ -30,6 +30,7 @@
 #include "growthuq/pool/pool.hpp"
 #include "support/cli_run.hpp"
 #include "support/scratch_directory.hpp"
+#include "support/small_disk.hpp"
 #include "support/text_file.hpp"
 
 using namespace growthuq;
@@ -59,21 +60,6 @@ struct ForeignLock {
     REQUIRE(::write(descriptor, record.data(), record.size()) == static_cast<ssize_t>(record.size()));
   }
   ~ForeignLock() { ::close(descriptor); }
-};
-
-// A tmpfs of `kilobytes` mounted at `where` (created) for a test's lifetime; mounted() false
-// when this process may not mount (not root, or a container without the right).
-struct SmallDisk {
-  fs::path where;
-  bool ok = false;
-  SmallDisk(fs::path path, int kilobytes) : where(std::move(path)) {
-    fs::create_directories(where);
-    ok = ::mount("tmpfs", where.c_str(), "tmpfs", 0, ("size=" + std::to_string(kilobytes) + "k").c_str()) == 0;
-  }
-  ~SmallDisk() {
-    if (ok) ::umount2(where.c_str(), MNT_DETACH);
-  }
-  bool mounted() const { return ok; }
 };
 
 // Fills the file system at `directory` to the last byte with a file named `name`.

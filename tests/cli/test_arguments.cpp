@@ -117,7 +117,7 @@ TEST_CASE("cli: every command refuses the same bad probe radius and Poisson rati
       {"fit-line", "raw.ini"},
   };
   const std::string nu_range = "a Poisson ratio in [0, 0.5)";
-  const std::string rho_range = "a probe radius in um, a finite number > 0";
+  const std::string rho_range = "a probe radius in um, > 0 and at most 1000";
   for (const auto& c : commands) {
     const std::string prefix = std::string("growthuq ") + c.command + ": error: ";
     for (const char* nu : {"0.5", "-0.1", "0.7", "nan", "inf", "abc"}) {
@@ -127,7 +127,7 @@ TEST_CASE("cli: every command refuses the same bad probe radius and Poisson rati
       CHECK(run.status == 2);
       CHECK(run.err == prefix + "--nu = '" + nu + "': expected " + nu_range + "\n");
     }
-    for (const char* rho : {"0", "-1", "nan", "inf", "abc"}) {
+    for (const char* rho : {"0", "-1", "nan", "inf", "abc", "1e300", "1000.5"}) {
       CAPTURE(c.command);
       CAPTURE(rho);
       const Run run = growthuq(std::string(c.command) + " " + c.arguments + " --rho-um=" + rho);

@@ -170,6 +170,20 @@ TEST_CASE("indent and eval --fidelity: bad input is one line naming the flag, no
   CHECK(refused.err.find("--force") != std::string::npos);
 }
 
+TEST_CASE("indent --field: the curve and the field commit together, so a field that fails leaves no curve") {
+  const ScratchDirectory scratch("indent_field_together");
+  // The field's temporary file cannot be made (a folder in its place): found only after the
+  // simulation, when the curve is already written.
+  std::filesystem::create_directories(scratch.root / "wall.h5.partial");
+  const CliOutcome run = run_cli(std::string("indent ") + tube + " --out curve.csv --field wall.xdmf --quiet", scratch.root);
+  CHECK(run.exit_code == 2);
+  CHECK(run.err == "growthuq indent: error: wall.h5.partial: is a directory: expected no file there (the temporary file a "
+                   "result is written to before it is renamed into place)\n");
+  CHECK(!std::filesystem::exists(scratch.root / "curve.csv"));  // it was kept without its field
+  CHECK(!std::filesystem::exists(scratch.root / "curve.csv.partial"));
+  CHECK(!std::filesystem::exists(scratch.root / "wall.xdmf"));
+}
+
 TEST_CASE("indent --help tells the defaults and what h means") {
   const ScratchDirectory scratch("indent_help");
   const CliOutcome help = run_cli("indent --help", scratch.root);

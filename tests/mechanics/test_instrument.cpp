@@ -43,7 +43,7 @@ std::string error_of(const std::string& key, const std::string& text) {
   return "no error";
 }
 
-const std::string rho_range = "a probe radius in um, a finite number > 0";
+const std::string rho_range = "a probe radius in um, > 0 and at most 1000";
 const std::string nu_range = "a Poisson ratio in [0, 0.5)";
 const std::string k_sys_range = "a sensor stiffness in N/m, a number > 0 or inf (an ideal sensor)";
 
@@ -61,15 +61,16 @@ TEST_CASE("instrument: absent entries keep the documented defaults") {
                        InputError);
 }
 
-TEST_CASE("instrument: probe radius, finite and > 0, in um as written") {
+TEST_CASE("instrument: probe radius, > 0 and at most 1000 um, in um as written") {
   // The value in metres is the unit table's conversion of the number written: the same double.
   CHECK(parsed("probe_radius_um", "0.25").probe_radius_m == 0.25 * find_unit("um", "", "").to_si);
   CHECK(*given_probe_radius_m(parsed("probe_radius_um", "0.25")) == from_um(0.25));
-  // Just inside: the smallest positive radius that survives the conversion, and a huge one.
+  // Just inside: the smallest positive radius that survives the conversion, and the largest.
   CHECK(parsed("probe_radius_um", "1e-300").probe_radius_m == 1e-300 * 1e-6);
-  CHECK(parsed("probe_radius_um", "1e300").probe_radius_m == 1e300 * 1e-6);
-  // Just outside and non-numbers: one message naming the key and the text as written.
-  for (const char* text : {"0", "-0", "-1e-300", "nan", "inf", "-inf", "abc", "0.5um", "", "1e-320"}) {
+  CHECK(parsed("probe_radius_um", "1000").probe_radius_m == 1000 * 1e-6);
+  // Just outside and non-numbers: one message naming the key and the text as written (1e300 um
+  // gave statistics that underflowed).
+  for (const char* text : {"0", "-0", "-1e-300", "nan", "inf", "-inf", "abc", "0.5um", "", "1e-320", "1000.001", "1e300"}) {
     CAPTURE(text);
     CHECK(error_of("probe_radius_um", text) == "c.ini:3: probe_radius_um = '" + std::string(text) + "': expected " + rho_range);
   }
@@ -138,5 +139,7 @@ TEST_CASE("instrument: validate() checks a built Instrument with the same ranges
   CHECK_FALSE(in_instrument_range(InstrumentField::poisson_ratio, 0.5));
   CHECK(in_instrument_range(InstrumentField::probe_radius, std::numeric_limits<double>::denorm_min()));
   CHECK_FALSE(in_instrument_range(InstrumentField::probe_radius, 0.0));
+  CHECK(in_instrument_range(InstrumentField::probe_radius, 1e-3));
+  CHECK_FALSE(in_instrument_range(InstrumentField::probe_radius, std::nextafter(1e-3, 1.0)));
   CHECK_FALSE(in_instrument_range(InstrumentField::sensor_stiffness, not_a_number));
 }

@@ -211,7 +211,7 @@ TEST_CASE("statuses instead of NaN") {
 TEST_CASE("parameters are validated with the key a user wrote") {
   Instrument missing_rho;
   CHECK_THROWS_WITH_AS(validate(missing_rho, "eval"),
-                       "eval: probe_radius_um = '': expected a probe radius in um, a finite number > 0", InputError);
+                       "eval: probe_radius_um = '': expected a probe radius in um, > 0 and at most 1000", InputError);
   CHECK_THROWS_WITH_AS(validate(probe(0.5 * um, 0.5), "eval"),
                        "eval: poisson_ratio = '0.5': expected a Poisson ratio in [0, 0.5)", InputError);
   CHECK_THROWS_WITH_AS(validate(probe(0.5 * um, 0.2, 0.0), "eval"),

@@ -72,12 +72,18 @@ struct FileContent {
 // of the earlier ones replaced. Overwrite as write_file_atomically.
 void write_files_together(const std::vector<FileContent>& files, Overwrite overwrite);
 
-// InputError when `path` exists and overwriting was not allowed, or when it exists and is not
+// Whether the folder an output goes into must exist already (most commands), or is created by
+// the command (synth's per-line folders, tradeoff's table): then its nearest existing ancestor
+// is checked instead.
+enum class Folder { must_exist, created_if_missing };
+
+// InputError when `path` exists and overwriting was not allowed, when it exists and is not
 // a regular file (a directory, a device, a FIFO, a socket; a symbolic link counts as what it
-// points to), whatever `overwrite` says (checked before long work starts, so a run does not
-// fail only at its end). "-" (standard output, for the commands that print a result there) is
-// an InputError too: never a file named "-".
-void check_can_write(const std::string& path, Overwrite overwrite);
+// points to), whatever `overwrite` says, or when its folder does not exist, is not a folder or
+// is not writable (checked before long work starts, so a run does not fail only at its end).
+// "-" (standard output, for the commands that print a result there) is an InputError too:
+// never a file named "-".
+void check_can_write(const std::string& path, Overwrite overwrite, Folder folder = Folder::must_exist);
 
 // The steps every writer shares (PartialFile, results.h5), for one that creates its partial
 // file itself:

@@ -11,7 +11,9 @@
 namespace growthuq {
 
 struct Instrument {
-  // Probe radius rho [m], finite and > 0. Required wherever turgor is computed: it dominates
+  // Probe radius rho [m], > 0 and at most 1 mm (no indenting probe is larger; a radius of
+  // 1e300 um gave statistics that underflowed, sd = 0 beside a positive IQR). Required wherever
+  // turgor is computed: it dominates
   // the answer (p falls ~2x from rho = 0.25 to 1 um), so it has no default; NaN means "not
   // given" (the relaxation commands then read it per curve from the tube sheet).
   double probe_radius_m = std::numeric_limits<double>::quiet_NaN();
@@ -29,7 +31,7 @@ struct Instrument {
 // The fields, for messages and for the one range check below.
 enum class InstrumentField { probe_radius, poisson_ratio, sensor_stiffness };
 
-// What a field's range reads like in a message: "a probe radius in um, a finite number > 0",
+// What a field's range reads like in a message: "a probe radius in um, > 0 and at most 1000",
 // "a Poisson ratio in [0, 0.5)", "a sensor stiffness in N/m, a number > 0 or inf (an ideal
 // sensor)".
 std::string_view instrument_range(InstrumentField field);

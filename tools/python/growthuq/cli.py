@@ -54,6 +54,12 @@ def _options(options):
 
 
 def _call(cli, arguments, cwd=None):
+    # subprocess would raise "ValueError: embedded null byte", naming no option: no file name or
+    # option value can hold a NUL, so it is refused here naming the argument.
+    for argument in [*arguments, *([str(cwd)] if cwd is not None else [])]:
+        if "\0" in str(argument):
+            raise ValueError(f"growthuq: the argument {str(argument)!r} contains a NUL character (\\0), which no "
+                             "file name or option value can hold")
     command = [find_cli(cli), *arguments]
     completed = subprocess.run(command, cwd=cwd, capture_output=True, text=True, check=False)
     if completed.returncode != 0:

@@ -182,6 +182,26 @@ def load(results):
     except OSError as error:
         raise ResultsError(f"{path}: not a readable HDF5 file ({error}); expected the results.h5 of "
                            "`growthuq run`") from None
+    try:
+        return _load_open(path, h5)
+    except ResultsError:
+        raise
+    except (AttributeError, KeyError, OSError, RuntimeError, ValueError, TypeError, IndexError) as error:
+        # h5py's own errors from deep inside (a damaged block, an object of another kind) say
+        # neither the file nor that it is the file that is wrong.
+        raise ResultsError(f"{path}: cannot be read as growthuq's results ({type(error).__name__}: {error}); "
+                           "expected an intact results.h5 of `growthuq run`: rerun the campaign") from None
+
+
+def _require(path, h5, name, what):
+    """ResultsError naming the file and the missing object `name` (`what` it is)."""
+    if name not in h5:
+        raise ResultsError(f"{path}: no /{name} ({what}); expected the layout `growthuq run` writes: rerun the "
+                           "campaign")
+
+
+def _load_open(path, h5):
+    """load() of the opened file `h5`; h5py's errors are turned into ResultsError by load()."""
     with h5:
         if "lines" not in h5 or "engine_version" not in h5.attrs:
             raise ResultsError(f"{path}: not a growthuq results file (expected the group /lines and the root "
@@ -190,6 +210,11 @@ def load(results):
             raise ResultsError(f"{path}: written by an older growthuq (no root attribute line_order, no dimension "
                                "scales); expected a results.h5 of this version: rerun the campaign")
         lines = _texts(h5.attrs["line_order"])
+        _require(path, h5, "summary", "the summary table")
+        for line in lines:
+            _require(path, h5, f"lines/{line}", f"the group of the line '{line}' that line_order lists")
+            for part in ("status", "input_rank_correlation", "analysis/input_output_spearman"):
+                _require(path, h5, f"lines/{line}/{part}", f"part of the line '{line}'")
         attrs = {name: _plain(value) for name, value in h5.attrs.items()}
         summary = _in_line_order(_table(h5["summary"]), lines)
         correlations = _correlations(h5, lines)

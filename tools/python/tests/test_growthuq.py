@@ -234,6 +234,67 @@ class RunAndLoad(unittest.TestCase):
             growthuq.run(self.campaign, cwd=self.work, samples=5, out="out")  # exists: no silent overwrite
         self.assertIn("--force", str(caught.exception))
 
+    def damaged_copy(self, name, damage):
+        """A copy of the run's results.h5 in a folder of its own, `damage`d (a function of the path)."""
+        folder = self.work / name
+        folder.mkdir()
+        copy = folder / "results.h5"
+        copy.write_bytes((self.out / "results.h5").read_bytes())
+        damage(copy)
+        return copy
+
+    def assert_load_names(self, path, *parts):
+        with self.assertRaises(growthuq.ResultsError) as caught:
+            growthuq.load(path)
+        message = str(caught.exception)
+        self.assertTrue(message.startswith(f"{path}: "), message)
+        for part in parts:
+            self.assertIn(part, message)
+
+    def test_a_damaged_results_file_raises_results_error_naming_it_and_what_is_missing(self):
+        def without(name):
+            def damage(path):
+                with h5py.File(path, "r+") as h5:
+                    del h5[name]
+            return damage
+
+        self.assert_load_names(self.damaged_copy("no_summary", without("summary")), "no /summary (the summary table)")
+        self.assert_load_names(self.damaged_copy("no_line", without("lines/wild_type")),
+                               "no /lines/wild_type (the group of the line 'wild_type' that line_order lists)")
+
+        def garble_header(name):
+            def damage(path):
+                # The object header of `name` overwritten: h5py raises KeyError ("bad object header
+                # version number") when it is opened, deep inside the reading.
+                with h5py.File(path, "r") as h5:
+                    address = h5py.h5o.get_info(h5[name].id).addr
+                with open(path, "r+b") as raw:
+                    raw.seek(address)
+                    raw.write(b"\xff" * 32)
+            return damage
+
+        self.assert_load_names(self.damaged_copy("garbled", garble_header("lines/wild_type/analysis/input_output_spearman")),
+                               "cannot be read as growthuq's results", "bad object header")
+
+        def garble_superblock(path):
+            with open(path, "r+b") as raw:
+                raw.write(b"\xff" * 64)
+
+        self.assert_load_names(self.damaged_copy("no_superblock", garble_superblock), "not a readable HDF5 file")
+
+        def truncate(path):
+            size = path.stat().st_size
+            with open(path, "r+b") as raw:
+                raw.truncate(size // 2)  # the second half of the blocks gone
+
+        self.assert_load_names(self.damaged_copy("truncated", truncate), "results.h5")
+
+    def test_a_nul_in_an_argument_is_refused_naming_it(self):
+        with self.assertRaises(ValueError) as caught:
+            growthuq.run(self.campaign, cwd=self.work, samples=5, out="o\0x")
+        self.assertIn("'o\\x00x' contains a NUL character", str(caught.exception))
+        self.assertNotIn("embedded null byte", str(caught.exception))
+
 
 class EvalTubes(unittest.TestCase):
     def test_frame_of_tubes_as_the_single_tube_path_gives(self):
