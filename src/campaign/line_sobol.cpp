@@ -5,19 +5,10 @@
 
 #include "campaign/line_model.hpp"
 #include "growthuq/sampling/random_stream.hpp"
+#include "sensitivity/table_text.hpp"
 
 namespace growthuq {
 namespace {
-
-std::string two_decimals(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f", value);
-  return std::string(text) == "-0.00" ? "0.00" : text;
-}
-
-std::string padded_left(const std::string& text, std::size_t width) {
-  return text.size() >= width ? text : std::string(width - text.size(), ' ') + text;
-}
 
 std::string table(const LineSobol& sobol, const Eigen::MatrixXd& value, const Eigen::MatrixXd& low, const Eigen::MatrixXd& high) {
   std::size_t name_width = 0;

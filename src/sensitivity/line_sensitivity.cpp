@@ -7,6 +7,7 @@
 
 #include "growthuq/sampling/random_stream.hpp"
 #include "growthuq/stats/line_analysis.hpp"
+#include "sensitivity/table_text.hpp"
 
 namespace growthuq {
 namespace {
@@ -42,16 +43,6 @@ double tail_share(const std::vector<double>& y) {
     if (j >= squares.size() - top) tail += squares[j];
   }
   return tail / total;
-}
-
-std::string two_decimals(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f", value);
-  return std::string(text) == "-0.00" ? "0.00" : text;
-}
-
-std::string padded_left(const std::string& text, std::size_t width) {
-  return text.size() >= width ? text : std::string(width - text.size(), ' ') + text;
 }
 
 }  // namespace

@@ -100,7 +100,7 @@ TEST_CASE("fidelity and [shell_fe] mistakes: one error naming file, line, key, v
   CHECK(error_of(section + "force_window_uN = 4\n").starts_with(file + ":14: force_window_uN = '4': expected two forces"));
   CHECK(error_of(section + "chunk_size = 0\n") == file + ":14: chunk_size = '0': expected a whole number from 1 to 10000");
   CHECK(error_of(section + "geometry = sphere\n") ==
-        file + ":14: unknown key 'geometry' in [shell_fe] (allowed: law, mesh, substrate, bending, half_model, tube_length_um, "
+        file + ":14: unknown key 'geometry' in [shell_fe] (allowed: law, mesh, contact, substrate, bending, half_model, tube_length_um, "
                "probe_distance_um, force_window_uN, chunk_size)");
   // The probe must sit on the tube: a distance beyond its length is refused as the model refuses it,
   // at the key's own line (15), not the section's (13).
