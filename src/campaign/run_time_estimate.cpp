@@ -26,12 +26,12 @@ std::string duration(double seconds) {
 
 double shell_fe_seconds_per_sample(ShellFeMesh mesh) {
   switch (mesh) {
-    case ShellFeMesh::coarse: return 9.0;
-    case ShellFeMesh::standard: return 55.0;
+    case ShellFeMesh::coarse: return 3.6;
+    case ShellFeMesh::standard: return 12.0;
     case ShellFeMesh::fine: return 220.0;
     case ShellFeMesh::finer: return 640.0;
   }
-  return 55.0;
+  return 12.0;
 }
 
 std::optional<ShellFeTimeEstimate> estimate_shell_fe_time(const PreparedCampaign& prepared) {

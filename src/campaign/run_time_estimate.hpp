@@ -15,16 +15,18 @@
 namespace growthuq {
 
 // Seconds of one core per shell_fe sample (one inverse: one force curve and up to six
-// inflations) at a mesh level, measured on this project's 2-core machine (2026-12-05), means
-// with the failed samples in (a campaign's time is the sum, and a sample that does not converge
-// costs several that do): coarse 8.9 s per sample over the first 270 samples of
-// campaigns/published_scale.ini (wild type and xxt1_xxt2, one process alone), rounded to 9;
-// default 54 s per forward curve, the mean over the 245 training tubes of
-// src/correction/training.csv, plus the inflations, 55; fine four times that (src/fe/README.md,
-// "Speed": 575 s against 149 s at the test tube); finer, not measured over a campaign, fine's
-// time times 2.9, the median ratio of the finer to the fine curve over the five points of
-// `tools/bench/fe-mesh-convergence --finer` (2.0 to 3.9). A campaign's own tubes may differ by a
-// factor of two either way.
+// inflations) at a mesh level, on this project's 2-core machine (2026-12-05), means with the
+// failed samples in (a campaign's time is the sum, and a sample that does not converge costs
+// several that do). Measured over campaigns with the penalty contact: coarse 8.9 s per sample
+// over the first 270 samples of campaigns/published_scale.ini; default 55 s over the 245
+// training tubes of src/correction/training.csv. The exact contact (the default now) was
+// measured side by side with the penalty on one tube by tools/bench/bench-fe-contact: its
+// inverse 2.5 times faster on the coarse mesh and 4.6 times on the default, so coarse
+// 8.9 / 2.5 = 3.6 s and default 55 / 4.6 = 12 s, until a campaign measures them. Fine and finer
+// keep the penalty's figures (fine four times default's 55 s; finer fine's times 2.9, the median
+// ratio over the five points of `tools/bench/fe-mesh-convergence --finer`): at the thick wall of
+// the convergence test the exact contact is no faster there. A campaign's own tubes may differ
+// by a factor of two either way.
 double shell_fe_seconds_per_sample(ShellFeMesh mesh);
 
 struct ShellFeTimeEstimate {
