@@ -12,8 +12,8 @@ from .results import read_results
 
 FORMATS = ("png", "pdf")
 FIGURES = ("boxes", "growth_rate", "correlogram", "sensitivity", "pca", "relaxation", "tradeoff")
-# Drawn unless --figures names them: the PCA's scree plot says nothing of which input drives an
-# output, which the sensitivity figure shows (issue 28); it stays available by name.
+# Not drawn unless --figures names them: the PCA's scree plot says nothing of which input drives
+# an output, which the sensitivity figure shows; it stays available by name.
 ON_REQUEST = ("pca",)
 
 
