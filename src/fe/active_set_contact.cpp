@@ -208,16 +208,16 @@ void ActiveSetContact::settle(const Obstacles& obstacles, Eigen::Matrix3Xd& x, b
       x.col(contact.node) -= (g.gap / along) * direction;
     }
   }
-  project(obstacles, fixed_, x);
+  project(obstacles, x);
 }
 
-void ActiveSetContact::project(const Obstacles& obstacles, const std::vector<char>& fixed, Eigen::Matrix3Xd& x) {
+void ActiveSetContact::project(const Obstacles& obstacles, Eigen::Matrix3Xd& x) const {
   if (obstacles.empty()) return;
   for (Eigen::Index v = 0; v < x.cols(); ++v) {
     const Eigen::Vector3d p = obstacles.limited(x.col(v), 0.0);
     if (p == x.col(v)) continue;
     for (int k = 0; k < 3; ++k) {
-      if (fixed.empty() || !fixed[static_cast<std::size_t>(3 * v + k)]) x(k, v) = p[k];
+      if (!fixed(3 * v + k)) x(k, v) = p[k];
     }
   }
 }
@@ -226,6 +226,7 @@ ContactReaction ActiveSetContact::reaction(const Obstacles& obstacles, const Eig
   ContactReaction r;
   r.force.assign(obstacles.size(), Eigen::Vector3d::Zero());
   r.contacts.assign(obstacles.size(), 0);
+  r.penetration.assign(obstacles.size(), 0.0);
   for (const ActiveContact& contact : active_) {
     // The obstacle pushes the node with lambda n; the wall pushes the obstacle back.
     r.force[static_cast<std::size_t>(contact.obstacle)] -= contact.multiplier * contact.gap.normal;
@@ -233,9 +234,10 @@ ContactReaction ActiveSetContact::reaction(const Obstacles& obstacles, const Eig
   }
   for (Eigen::Index v = 0; v < x.cols(); ++v) {
     for (std::size_t o = 0; o < obstacles.size(); ++o) {
-      r.max_penetration = std::max(r.max_penetration, -obstacles.gap(o, x.col(v)).gap);
+      r.penetration[o] = std::max(r.penetration[o], -obstacles.gap(o, x.col(v)).gap);
     }
   }
+  for (double p : r.penetration) r.max_penetration = std::max(r.max_penetration, p);
   return r;
 }
 

@@ -32,6 +32,7 @@ struct ActiveContact {
 struct ContactReaction {
   std::vector<Eigen::Vector3d> force;  // per obstacle (spheres first)
   std::vector<int> contacts;           // nodes held, per obstacle
+  std::vector<double> penetration;     // deepest, per obstacle
   double max_penetration = 0.0;
 };
 
@@ -60,14 +61,14 @@ class ActiveSetContact {
   // surfaces (with `lifted`, those the step lifts too: for the whole step), then every node out
   // of every obstacle.
   void settle(const Obstacles&, Eigen::Matrix3Xd& x, bool lifted = true) const;
-  // Every node out of every obstacle (projected onto the surface), fixed dofs untouched.
-  static void project(const Obstacles&, const std::vector<char>& fixed, Eigen::Matrix3Xd& x);
   // The obstacles' reaction at x with the wall's gradient g there (after select()).
   ContactReaction reaction(const Obstacles&, const Eigen::Matrix3Xd& x) const;
 
   const std::vector<ActiveContact>& active() const { return active_; }
 
  private:
+  // Every node out of every obstacle (projected onto the surface), fixed dofs untouched.
+  void project(const Obstacles&, Eigen::Matrix3Xd& x) const;
   bool fixed(Eigen::Index dof) const { return !fixed_.empty() && fixed_[static_cast<std::size_t>(dof)]; }
 
   std::vector<char> fixed_;

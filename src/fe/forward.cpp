@@ -207,19 +207,13 @@ void fill_fields(const Setup& s, const ShellAssembly& assembly, const Eigen::Mat
   }
 }
 
-void add_timing(const NewtonSolver& solver, const ShellObjective& objective, SolverTiming& total) {
+// The time of one pass (a solver and its objective) added to the result's.
+void add_timing(const NewtonSolver& solver, const ShellObjective& objective, ForwardResult& result) {
   const SolverTiming& part = solver.timing();
-  total.assembly += part.assembly;
-  total.factorisation += part.factorisation;
-  total.contact += objective.contact_seconds();
-  total.factorisations += part.factorisations;
-}
-
-void copy_timing(const SolverTiming& timing, ForwardResult& result) {
-  result.seconds_assembly = timing.assembly;
-  result.seconds_factorisation = timing.factorisation;
-  result.factorisations = timing.factorisations;
-  result.seconds_contact = timing.contact;
+  result.seconds_assembly += part.assembly;
+  result.seconds_factorisation += part.factorisation;
+  result.seconds_contact += objective.contact_seconds();
+  result.factorisations += part.factorisations;
 }
 
 ForwardResult run(const ForwardProblem& p, bool indent) {
@@ -258,7 +252,6 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   std::optional<ShellObjective> objective;
   std::unique_ptr<NewtonSolver> solver;
   Eigen::Matrix3Xd x;
-  SolverTiming timing;
   for (int pass = 0; pass < 2; ++pass) {
     try {
       setup = make_setup(p, focus_distance);
@@ -298,8 +291,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
         *objective, *solver, x, [&](double t, ShellLoads& loads) { loads.pressure = t * p.pressure; }, inflation);
     result.newton_iterations += inflated.newton_iterations;
     if (inflated.status != FeStatus::ok) {
-      add_timing(*solver, *objective, timing);
-      copy_timing(timing, result);
+      add_timing(*solver, *objective, result);
       // No equilibrium beyond the pressure maximum of the wall: the load steps shrink to nothing
       // while the diameter runs away.
       result.status = inflated.reached > 0.5 ? FeStatus::burst : inflated.status;
@@ -310,7 +302,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
     const double actual = reference_distance(p, setup.mesh, x, p.probe_distance);
     if (std::fabs(actual - focus_distance) <= 0.5 * sizing.fine_radius) break;
     focus_distance = actual;
-    add_timing(*solver, *objective, timing);  // the discarded pass
+    add_timing(*solver, *objective, result);  // the discarded pass
   }
   if (p.geometry == Geometry::tube) {
     setup.probe_axis = Eigen::Vector3d(0, 0, x.row(2).maxCoeff() - p.probe_distance);
@@ -318,8 +310,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   measure_turgid(p, setup, *assembly, x, result);
   if (!indent) {
     fill_fields(setup, *assembly, x, result);
-    add_timing(*solver, *objective, timing);
-    copy_timing(timing, result);
+    add_timing(*solver, *objective, result);
     return result;
   }
 
@@ -333,8 +324,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   if (!std::isfinite(touch)) {
     result.status = FeStatus::probe_beyond_mesh;
     result.message = "no node of the wall under the probe";
-    add_timing(*solver, *objective, timing);
-    copy_timing(timing, result);
+    add_timing(*solver, *objective, result);
     return result;
   }
   const Eigen::Vector3d start(touch, setup.probe_axis.y(), setup.probe_axis.z());
@@ -388,8 +378,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   result.newton_iterations += indented.newton_iterations;
   result.load_steps = indented.steps;
   result.indentation_iterations = indented.newton_iterations;
-  add_timing(*solver, *objective, timing);
-  copy_timing(timing, result);
+  add_timing(*solver, *objective, result);
   fill_fields(setup, *assembly, x, result);
   if (lost) {
     result.status = FeStatus::contact_lost;

@@ -69,7 +69,7 @@ struct NewtonReport {
 
 // Accumulated time of the parts, for the benchmark.
 struct SolverTiming {
-  double assembly = 0.0, factorisation = 0.0, contact = 0.0;
+  double assembly = 0.0, factorisation = 0.0;  // assembly: linearise and the line search's energies
   int factorisations = 0;
 };
 
@@ -83,7 +83,6 @@ class NewtonSolver {
   // Minimises from x (admissible) in place.
   NewtonReport minimise(Eigen::Matrix3Xd& x, const NewtonOptions& options = {});
   const SolverTiming& timing() const { return timing_; }
-  SolverTiming& timing() { return timing_; }
 
  private:
   struct Factor;

@@ -107,13 +107,8 @@ ContactState ShellObjective::contact_state(const Eigen::Matrix3Xd& x) {
   state.sphere_force.assign(reaction.force.begin(), reaction.force.begin() + static_cast<std::ptrdiff_t>(spheres));
   state.plane_force.assign(reaction.force.begin() + static_cast<std::ptrdiff_t>(spheres), reaction.force.end());
   state.sphere_contacts.assign(reaction.contacts.begin(), reaction.contacts.begin() + static_cast<std::ptrdiff_t>(spheres));
+  state.sphere_penetration.assign(reaction.penetration.begin(), reaction.penetration.begin() + static_cast<std::ptrdiff_t>(spheres));
   state.max_penetration = reaction.max_penetration;
-  state.sphere_penetration.assign(spheres, 0.0);
-  for (Eigen::Index v = 0; v < x.cols(); ++v) {
-    for (std::size_t s = 0; s < spheres; ++s) {
-      state.sphere_penetration[s] = std::max(state.sphere_penetration[s], -obstacles.gap(s, x.col(v)).gap);
-    }
-  }
   return state;
 }
 
