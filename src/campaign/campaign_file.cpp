@@ -293,24 +293,6 @@ CampaignLine read_line_section(const IniDocument& document, const IniSection& se
 
 }  // namespace
 
-std::string_view to_string(Fidelity fidelity) {
-  switch (fidelity) {
-    case Fidelity::closed_form: return "closed_form";
-    case Fidelity::corrected: return "corrected";
-    case Fidelity::shell_fe: return "shell_fe";
-  }
-  return "?";
-}
-
-Fidelity parse_fidelity(std::string_view text, std::string_view location, std::string_view key) {
-  if (text == "closed_form" || text == "thin_shell") return Fidelity::closed_form;
-  if (text == "corrected") return Fidelity::corrected;
-  if (text == "shell_fe") return Fidelity::shell_fe;
-  throw_bad_value(location, key, text,
-                  "closed_form (the thin shell's closed forms; old name thin_shell), corrected (the closed form "
-                  "corrected to the finite-element model) or shell_fe (the finite-element model)");
-}
-
 const CampaignLine* Campaign::find_line(std::string_view line_name) const {
   for (const CampaignLine& line : lines) {
     if (line.name == line_name) return &line;

@@ -181,6 +181,14 @@ PreparedCampaign::PreparedCampaign(Campaign campaign, Pool* pool, ProgressMode p
   }
 }
 
+bool PreparedCampaign::has_slow_samples(const PreparedLine& line) const {
+  return seconds_per_sample(line.plan) >= slow_sample_seconds;
+}
+
+std::size_t PreparedCampaign::chunk_size_of(const PreparedLine& line) const {
+  return has_slow_samples(line) ? campaign_.shell_fe_chunk_size : campaign_.chunk_size;
+}
+
 LineDesign PreparedCampaign::design(const PreparedLine& line) const {
   SamplingOptions options;
   options.samples = campaign_.samples;
@@ -339,14 +347,13 @@ class LineRun {
         observer_.chunk_done(range);
       }
     };
-    const std::size_t chunk_size = campaign_.campaign().chunk_size_of(line.campaign_line);
+    const std::size_t chunk_size = campaign_.chunk_size_of(line);
     // Finite-element samples take seconds to minutes. Rank 0 computes samples too and answers a
     // worker only between its own, so a worker holding one sample would wait, idle, for rank 0's
     // sample to end each time (measured: the second of 2 processes busy 40 % of the time); with
     // one more queued it starts that one meanwhile. No deeper: a queued sample can no longer go
     // to whichever process frees up first, which matters at a line's end.
-    const bool slow_samples = campaign_.campaign().fidelity_of(line.campaign_line) == Fidelity::shell_fe;
-    pool_.set_queued_chunks(slow_samples ? 2 : 3);
+    pool_.set_queued_chunks(campaign_.has_slow_samples(line) ? 2 : 3);
     if (journal_ == nullptr) {
       pool_.run(samples_, chunk_size, work, sink);
     } else {

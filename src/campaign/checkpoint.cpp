@@ -97,7 +97,7 @@ std::unique_ptr<RunCheckpoint> RunCheckpoint::resume(Pool& pool, const PreparedC
     for (const ChunkRecord& record : scan.records) {
       const std::size_t size = record.range.end - record.range.begin;
       const std::size_t chunk_size =
-          record.line < campaign.lines().size() ? campaign.campaign().chunk_size_of(campaign.lines()[record.line].campaign_line) : 1;
+          record.line < campaign.lines().size() ? campaign.chunk_size_of(campaign.lines()[record.line]) : 1;
       const bool fits = record.line < checkpoint->held_.size() && record.range.begin % chunk_size == 0 &&
                         record.range.end == std::min(n, record.range.begin + chunk_size) &&
                         record.count == values_per_sample * size;

@@ -1,9 +1,11 @@
 #include "campaign/run_time_estimate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "growthuq/campaign/campaign_file.hpp"
+#include "growthuq/evaluation/evaluator.hpp"
 
 namespace growthuq {
 namespace {
@@ -24,28 +26,18 @@ std::string duration(double seconds) {
 
 }  // namespace
 
-double shell_fe_seconds_per_sample(ShellFeMesh mesh) {
-  switch (mesh) {
-    case ShellFeMesh::coarse: return 3.6;
-    case ShellFeMesh::standard: return 12.0;
-    case ShellFeMesh::fine: return 220.0;
-    case ShellFeMesh::finer: return 640.0;
-  }
-  return 12.0;
-}
-
 std::optional<ShellFeTimeEstimate> estimate_shell_fe_time(const PreparedCampaign& prepared) {
   const Campaign& campaign = prepared.campaign();
   ShellFeTimeEstimate estimate;
   for (const PreparedLine& line : prepared.lines()) {
-    if (campaign.fidelity_of(line.campaign_line) != Fidelity::shell_fe) continue;
+    if (!prepared.has_slow_samples(line)) continue;
+    estimate.seconds_per_sample = std::max(estimate.seconds_per_sample, seconds_per_sample(line.plan));
     estimate.samples += campaign.samples;
     // Every replicate of the bootstrap runs every line's models again.
     estimate.bootstrap_samples += campaign.data_uncertainty.replicates * data_uncertainty_samples(campaign);
   }
   if (estimate.samples == 0) return std::nullopt;
   estimate.samples += estimate.bootstrap_samples;
-  estimate.seconds_per_sample = shell_fe_seconds_per_sample(campaign.shell_fe.mesh);
   estimate.core_seconds = static_cast<double>(estimate.samples) * estimate.seconds_per_sample;
   return estimate;
 }

@@ -1,26 +1,29 @@
-// growthuq eval: the thin-shell inverse for measured tubes, without any Monte Carlo. One tube
-// from flags (every output printed with its unit and the status), or a CSV of tubes with columns
-// named as `growthuq sample` writes them (k_N_per_m, h_nm, d_um, d0_um; h optional) written
-// back with the outputs and a status column appended. --fidelity shell_fe runs the
-// finite-element model's inverse instead (growthuq/fe/indentation.hpp), tube by tube.
+// growthuq eval: a fidelity's inverse for measured tubes, without any Monte Carlo. One tube from
+// flags (every output printed with its unit and the status), or a CSV of tubes with columns
+// named as `growthuq sample` writes them (k_N_per_m, h_nm, d_um, d0_um; h optional at
+// closed_form) written back with the outputs and a status column appended. Every fidelity runs
+// through the evaluators a campaign runs (fidelity/fidelity.hpp); a slow one (the
+// finite-element shell) tube by tube with progress.
+#include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <optional>
-#include <span>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "commands.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
-#include "growthuq/correction/corrected_closed_form.hpp"
 #include "growthuq/evaluation/evaluator.hpp"
-#include "growthuq/fe/indentation.hpp"
+#include "growthuq/fidelity/fidelity.hpp"
 #include "growthuq/io/csv.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "growthuq/mechanics/thin_shell_evaluators.hpp"
@@ -47,47 +50,36 @@ struct EvalOptions {
   std::string in;
   std::string out;
   bool force = false;
-  // Model: closed_form (the thin shell) or shell_fe (the finite-element shell, with its flags).
   std::string fidelity = "closed_form";
-  ShellFeFlags model;
+  ShellFeFlags model;  // the finite-element model's options (shell_fe; corrected checks them)
 };
 
-// An output, the unit it is written in, and whether it needs the wall thickness.
+// An output eval can write, in the order it writes them, the unit it is written in, whether it
+// needs the wall thickness and what it is. A fidelity writes those its evaluators write.
 struct Output {
   std::string_view quantity;
   std::string_view unit;
   bool needs_h;
+  std::string_view description;  // empty: the quantity's own (units.hpp)
 };
 
 constexpr std::array outputs{
-    Output{"p", "MPa", false},          Output{"E", "MPa", true},
-    Output{"alpha", "um", false},       Output{"phi", "1", false},
-    Output{"lambda", "1", false},       Output{"hoop_stress", "MPa", true},
-    Output{"wall_stiffness", "N/m", true},
+    Output{"p", "MPa", false, ""},
+    Output{"E", "MPa", true, ""},
+    Output{"alpha", "um", false, ""},
+    Output{"phi", "1", false, ""},
+    Output{"lambda", "1", false, ""},
+    Output{"hoop_stress", "MPa", true, ""},
+    Output{"wall_stiffness", "N/m", true, ""},
+    Output{"h0", "nm", true, "unstressed wall thickness (from the finite-element inflation)"},
 };
-
-// Fidelity corrected writes p and E together, from k, d, d0 and h.
-constexpr std::array corrected_outputs{Output{"p", "MPa", true}, Output{"E", "MPa", true}};
 
 const Unit& unit_of(std::string_view symbol) { return find_unit(symbol, command, "unit"); }
 
-// The instrument from the flags, through the parser the campaign file uses (the evaluators
-// validate again, as an invariant of the library).
-Instrument instrument(const EvalOptions& options) {
-  return parse_instrument(instrument_flags(command, options.rho_um, options.nu, options.k_sys), ProbeRadius::required);
-}
-
-// The evaluators for the requested outputs; the turgor-only plan never touches h.
-std::vector<const Evaluator*> plan_for(const ThinShellTurgor& turgor, const ThinShellModulus& modulus,
-                                       bool has_h) {
-  const std::vector<const Evaluator*> available{&turgor, &modulus};
-  std::vector<std::string> inputs{"k", "d", "d0"};
-  if (has_h) inputs.emplace_back("h");
-  std::vector<std::string> wanted;
-  for (const Output& output : outputs) {
-    if (has_h || !output.needs_h) wanted.emplace_back(output.quantity);
-  }
-  return plan_evaluation(available, inputs, wanted);
+std::string_view description_of(const Output& output) {
+  if (!output.description.empty()) return output.description;
+  const Quantity* quantity = find_quantity(output.quantity);
+  return quantity ? quantity->description : "";
 }
 
 double positive_flag(const std::string& text, std::string_view key, std::string_view what) {
@@ -96,7 +88,85 @@ double positive_flag(const std::string& text, std::string_view key, std::string_
   return value;
 }
 
-int evaluate_point(const EvalOptions& options, const Instrument& parameters, const Evaluator* corrected) {
+// The fidelity's models and the plan that turns the measurements into every output they write.
+class EvalModel {
+ public:
+  EvalModel(Fidelity fidelity, const Instrument& instrument, const ShellFeOptions& options, bool has_h)
+      : models_(turgor_modulus_models(fidelity, instrument, options, command, OptionNames::command_flags,
+                                      ExtraOutputs::unstressed_thickness)) {
+    std::vector<const Evaluator*> available;
+    for (const auto& model : models_) available.push_back(model.get());
+    std::vector<std::string> inputs{"k", "d", "d0"};
+    if (has_h) inputs.emplace_back("h");
+    std::vector<std::string> wanted;
+    for (const Output& output : outputs) {
+      if (!has_h && output.needs_h) continue;
+      for (const Evaluator* model : available) {
+        const std::vector<std::string> writes = model->writes();
+        if (std::find(writes.begin(), writes.end(), output.quantity) != writes.end()) {
+          wanted.emplace_back(output.quantity);
+          written_.push_back(&output);
+          break;
+        }
+      }
+    }
+    plan_ = plan_evaluation(available, inputs, wanted);
+  }
+
+  const std::vector<const Output*>& written() const { return written_; }
+  bool slow() const { return seconds_per_sample(plan_) >= slow_sample_seconds; }
+  double seconds_per_tube() const { return seconds_per_sample(plan_); }
+
+  // Runs the plan on `block`; a slow model tube by tube, saying on `progress` how far it is.
+  void run(SampleBlock& block, std::ostream& progress) const {
+    if (!slow()) {
+      run_plan(plan_, block);
+      return;
+    }
+    const std::vector<std::string> inputs = block.quantities();
+    for (const Output* output : written_) block.add_column(output->quantity);
+    const auto start = std::chrono::steady_clock::now();
+    for (std::size_t i = 0; i < block.size(); ++i) {
+      SampleBlock one(1);
+      for (const std::string& name : inputs) one.set_column(name, std::vector<double>{std::as_const(block).column(name)[i]});
+      one.status()[0] = block.status()[i];
+      run_plan(plan_, one);
+      for (const Output* output : written_) block.column(output->quantity)[i] = one.column(output->quantity)[0];
+      block.status()[i] = one.status()[0];
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      progress << "  tube " << (i + 1) << " of " << block.size() << ": " << to_string(one.status()[0]) << ", "
+               << format_double(seconds) << " s so far\n"
+               << std::flush;
+    }
+  }
+
+ private:
+  std::vector<std::unique_ptr<const Evaluator>> models_;
+  std::vector<const Evaluator*> plan_;
+  std::vector<const Output*> written_;
+};
+
+// What the model is, for the first line of the report.
+std::string model_text(Fidelity fidelity, const ShellFeOptions& options) {
+  switch (fidelity) {
+    case Fidelity::closed_form: return "thin-shell inverse (Vogler et al. 2013, Arnoldi et al. 2000)";
+    case Fidelity::corrected: return "corrected closed form (src/correction/README.md)";
+    case Fidelity::shell_fe: return "finite-element shell inverse (" + describe(options) + ")";
+  }
+  return "?";
+}
+
+std::string instrument_text(const EvalOptions& options, const Instrument& parameters) {
+  return "rho = " + options.rho_um + " um, nu = " + format_double(parameters.poisson_ratio) +
+         ", k_sys = " + (std::isinf(parameters.sensor_stiffness_N_per_m) ? std::string("inf (ideal sensor)") : options.k_sys + " N/m");
+}
+
+std::string missing_thickness(Fidelity fidelity) {
+  return "--fidelity " + std::string(to_string(fidelity)) + " needs the wall thickness";
+}
+
+int evaluate_point(const EvalOptions& options, const Instrument& parameters, Fidelity fidelity,
+                   const ShellFeOptions& model_options) {
   for (const auto& [text, key] : {std::pair{&options.k, "--k"}, std::pair{&options.d_um, "--d-um"},
                                   std::pair{&options.d0_um, "--d0-um"}}) {
     if (text->empty()) {
@@ -104,7 +174,9 @@ int evaluate_point(const EvalOptions& options, const Instrument& parameters, con
     }
   }
   const bool has_h = !options.h_nm.empty();
-  if (corrected != nullptr && !has_h) throw InputError(std::string(command), "--h-nm is required with --fidelity corrected");
+  if (fidelity != Fidelity::closed_form && !has_h) {
+    throw InputError(std::string(command), "--h-nm is required with --fidelity " + std::string(to_string(fidelity)));
+  }
   SampleBlock block(1);
   block.set_column("k", std::vector<double>{positive_flag(options.k, "--k", "a positive stiffness in N/m")});
   const double d_um = positive_flag(options.d_um, "--d-um", "a positive diameter in um");
@@ -116,30 +188,26 @@ int evaluate_point(const EvalOptions& options, const Instrument& parameters, con
   if (has_h) {
     block.set_column("h", std::vector<double>{from_nm(positive_flag(options.h_nm, "--h-nm", "a positive thickness in nm"))});
   }
-  const ThinShellTurgor turgor(parameters, command);
-  const ThinShellModulus modulus;
-  if (corrected != nullptr) {
-    run_plan(std::vector<const Evaluator*>{corrected}, block);
-  } else {
-    run_plan(plan_for(turgor, modulus, has_h), block);
+  const EvalModel model(fidelity, parameters, model_options, has_h);
+  if (model.slow()) {
+    std::cerr << "inverting the tube with the " << model_text(fidelity, model_options) << ": about "
+              << format_double(model.seconds_per_tube()) << " s of one core\n";
   }
+  const auto start = std::chrono::steady_clock::now();
+  model.run(block, std::cerr);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const SampleStatus status = block.status()[0];
-  std::cout << (corrected != nullptr ? "corrected closed form (src/correction/README.md)"
-                                     : "thin-shell inverse (Vogler et al. 2013, Arnoldi et al. 2000)")
-            << ": rho = " << options.rho_um << " um, nu = " << format_double(parameters.poisson_ratio) << ", k_sys = "
-            << (std::isinf(parameters.sensor_stiffness_N_per_m) ? "inf (ideal sensor)" : options.k_sys + " N/m") << "\n";
-  for (const Output& output : corrected != nullptr ? std::span<const Output>(corrected_outputs) : std::span<const Output>(outputs)) {
-    if (output.needs_h && !has_h) continue;
-    const Quantity* quantity = find_quantity(output.quantity);
-    const double value = block.column(output.quantity)[0];
+  std::cout << model_text(fidelity, model_options) << ": " << instrument_text(options, parameters) << "\n";
+  for (const Output* output : model.written()) {
     std::ostringstream line;
-    line << "  " << std::left << std::setw(16) << output.quantity << std::setw(22)
-         << (status == SampleStatus::ok ? format_double(value / unit_of(output.unit).to_si) : "-") << std::setw(6)
-         << (output.unit == "1" ? "" : output.unit) << (quantity ? quantity->description : "");
+    line << "  " << std::left << std::setw(16) << output->quantity << std::setw(22)
+         << (status == SampleStatus::ok ? format_double(block.column(output->quantity)[0] / unit_of(output->unit).to_si) : "-")
+         << std::setw(6) << (output->unit == "1" ? "" : output->unit) << description_of(*output);
     std::cout << line.str() << "\n";
   }
   if (!has_h) std::cout << "  (E, hoop stress and wall stiffness need the wall thickness: --h-nm)\n";
+  if (model.slow()) std::cout << "  " << std::left << std::setw(16) << "seconds" << format_double(seconds) << "\n";
   std::cout << "status: " << to_string(status);
   if (status != SampleStatus::ok) std::cout << " (" << describe(status) << ")";
   std::cout << "\n";
@@ -157,171 +225,45 @@ struct MeasuredColumn {
   }
 };
 
+std::string units_of(const Quantity& quantity) {
+  std::string units;
+  for (const Unit& unit : known_units()) {
+    if (unit.dimension == quantity.dimension) units += (units.empty() ? "" : ", ") + column_name(quantity.name, unit);
+  }
+  return units;
+}
+
 // The column holding `quantity` in `table`: "<quantity>_<suffix>" for any known unit of its
 // dimension (d_um, d_mm, h_nm, h_um, ...). Missing: nullopt.
 std::optional<MeasuredColumn> input_column(const CsvTable& table, std::string_view quantity_name) {
-  const Quantity* quantity = find_quantity(quantity_name);
+  const Quantity& quantity = *find_quantity(quantity_name);
   std::optional<MeasuredColumn> found;
   std::string found_name;
-  for (const Unit& unit : known_units()) {
-    if (unit.dimension != quantity->dimension) continue;
-    const std::string name = column_name(quantity_name, unit);
-    if (!table.has_column(name)) continue;
-    if (found) {
-      throw InputError(file_location(table.path, 0), "columns '" + found_name + "' and '" + name +
-                                                         "' both give " + std::string(quantity_name) +
-                                                         ": keep one");
-    }
-    found = MeasuredColumn{table.numeric_column(name), &unit};
-    found_name = name;
-  }
-  // A column named like the quantity with a unit that is not one of its own (h_s, d_mmm) would
-  // be passed through unread, and the outputs that need it left out without a word.
   const std::string prefix = std::string(quantity_name) + "_";
   for (const std::string& name : table.header) {
-    if (!name.starts_with(prefix) || (found && name == found_name)) continue;
-    std::string units;
-    for (const Unit& unit : known_units()) {
-      if (unit.dimension == quantity->dimension) units += (units.empty() ? "" : ", ") + column_name(quantity_name, unit);
+    const Unit* unit = unit_of_column(quantity, name);
+    if (unit == nullptr) {
+      // A column named like the quantity with a unit that is not one of its own (h_s, d_mmm)
+      // would be passed through unread, and the outputs that need it left out without a word.
+      if (name.starts_with(prefix)) {
+        throw InputError(file_location(table.path, 0), "column '" + name + "' names " + std::string(quantity_name) +
+                                                           " with no unit of " + std::string(to_string(quantity.dimension)) +
+                                                           ": expected one of " + units_of(quantity) + " (or rename the column)");
+      }
+      continue;
     }
-    throw InputError(file_location(table.path, 0), "column '" + name + "' names " + std::string(quantity_name) +
-                                                       " with no unit of " + std::string(to_string(quantity->dimension)) +
-                                                       ": expected one of " + units + " (or rename the column)");
+    if (found) {
+      throw InputError(file_location(table.path, 0), "columns '" + found_name + "' and '" + name + "' both give " +
+                                                         std::string(quantity_name) + ": keep one");
+    }
+    found = MeasuredColumn{table.numeric_column(name), unit};
+    found_name = name;
   }
   return found;
 }
 
-// The finite-element inverse's outputs: the closed form's that keep their meaning (alpha and
-// phi are the closed form's own), and the unstressed thickness.
-constexpr std::array shell_fe_outputs{
-    Output{"p", "MPa", true},      Output{"E", "MPa", true},
-    Output{"lambda", "1", true},   Output{"hoop_stress", "MPa", true},
-    Output{"wall_stiffness", "N/m", true},
-};
-
-struct ShellFeValues {
-  ShellFeInverse inverse;
-  double lambda = 0, hoop_stress = 0, wall_stiffness = 0;
-  double value(std::string_view quantity) const {
-    if (quantity == "p") return inverse.pressure;
-    if (quantity == "E") return inverse.young;
-    if (quantity == "lambda") return lambda;
-    if (quantity == "hoop_stress") return hoop_stress;
-    return wall_stiffness;
-  }
-};
-
-// One tube through the finite-element inverse; the hoop stress p d / (2 h) is the far field's
-// exact equilibrium (mid-surface d, turgid h), E h the wall stiffness.
-ShellFeValues shell_fe_tube(const ShellFeMeasurement& tube, const Instrument& parameters,
-                            const ShellFeOptions& model) {
-  ShellFeValues values;
-  values.inverse = invert_indentation(tube, parameters, model);
-  values.lambda = tube.diameter / tube.plasmolysed_diameter;
-  values.hoop_stress = values.inverse.pressure * tube.diameter / (2.0 * tube.thickness);
-  values.wall_stiffness = values.inverse.young * tube.thickness;
-  return values;
-}
-
-std::string instrument_text(const EvalOptions& options, const Instrument& parameters) {
-  return "rho = " + options.rho_um + " um, nu = " + format_double(parameters.poisson_ratio) +
-         ", k_sys = " + (options.k_sys.empty() ? std::string("inf (ideal sensor)") : options.k_sys + " N/m");
-}
-
-int evaluate_point_shell_fe(const EvalOptions& options, const Instrument& parameters, const ShellFeOptions& model) {
-  for (const auto& [text, key] : {std::pair{&options.k, "--k"}, std::pair{&options.d_um, "--d-um"},
-                                  std::pair{&options.d0_um, "--d0-um"}, std::pair{&options.h_nm, "--h-nm"}}) {
-    if (text->empty()) {
-      throw InputError(std::string(command), std::string(key) + " is required with --fidelity shell_fe (or give a file with --in)");
-    }
-  }
-  ShellFeMeasurement tube;
-  tube.stiffness = positive_flag(options.k, "--k", "a positive stiffness in N/m");
-  tube.thickness = positive_flag(options.h_nm, "--h-nm", "a positive thickness in nm") * 1e-9;
-  tube.diameter = positive_flag(options.d_um, "--d-um", "a positive diameter in um") * 1e-6;
-  tube.plasmolysed_diameter = positive_flag(options.d0_um, "--d0-um", "a positive diameter in um") * 1e-6;
-  const ShellFeValues values = shell_fe_tube(tube, parameters, model);
-  const ShellFeInverse& inverse = values.inverse;
-  const bool ok = inverse.status == ShellFeStatus::ok;
-
-  std::cout << "finite-element shell inverse: " << describe(model) << "; " << instrument_text(options, parameters) << "\n";
-  for (const Output& output : shell_fe_outputs) {
-    const Quantity* quantity = find_quantity(output.quantity);
-    std::ostringstream line;
-    line << "  " << std::left << std::setw(20) << output.quantity << std::setw(22)
-         << (ok ? format_double(values.value(output.quantity) / unit_of(output.unit).to_si) : "-") << std::setw(6)
-         << (output.unit == "1" ? "" : output.unit) << (quantity ? quantity->description : "");
-    std::cout << line.str() << "\n";
-  }
-  const auto extra = [&](std::string_view name, const std::string& value, std::string_view unit, std::string_view what) {
-    std::ostringstream line;
-    line << "  " << std::left << std::setw(20) << name << std::setw(22) << value << std::setw(6) << unit << what;
-    std::cout << line.str() << "\n";
-  };
-  extra("h0", ok ? format_double(inverse.unstressed_thickness * 1e9) : "-", "nm", "unstressed wall thickness");
-  extra("p_over_E", ok ? format_double(inverse.pressure_over_young) : "-", "", "turgor over modulus, from the inflation");
-  extra("E_closed_form", inverse.closed_form_young > 0 ? format_double(inverse.closed_form_young * 1e-6) : "-", "MPa",
-        "the thin-shell inverse's E (the root's first estimate)");
-  extra("newton_iterations", std::to_string(inverse.newton_iterations), "", "");
-  extra("inflation_solves", std::to_string(inverse.inflation_solves), "", "finite-element inflations refining p/E");
-  extra("seconds", format_double(inverse.seconds), "s", "");
-  std::cout << "status: " << to_string(inverse.status);
-  if (!ok) std::cout << " (" << describe(inverse.status) << (inverse.message.empty() ? "" : ": " + inverse.message) << ")";
-  std::cout << "\n";
-  return 0;
-}
-
-
-// Every tube of a file through the finite-element inverse (after evaluate_file has read the
-// columns into `block`): the input columns, then p_MPa, E_MPa, lambda, hoop_stress_MPa,
-// wall_stiffness_N_per_m, h0_nm, status.
-int write_shell_fe_file(const EvalOptions& options, const Instrument& parameters, const ShellFeOptions& model,
-                        const CsvTable& table, const SampleBlock& block, Overwrite overwrite) {
-  std::vector<std::string> header = table.header;
-  std::vector<std::string> added;
-  for (const Output& output : shell_fe_outputs) added.push_back(column_name(output.quantity, unit_of(output.unit)));
-  added.emplace_back("h0_nm");
-  added.emplace_back("status");
-  for (const std::string& name : added) {
-    if (table.has_column(name)) {
-      throw InputError(file_location(table.path, 0), "the input already has a column '" + name + "', which eval writes: rename or drop it");
-    }
-    header.push_back(name);
-  }
-  CsvWriter writer(header);
-  std::map<ShellFeStatus, std::size_t> counts;
-  double seconds = 0;
-  for (std::size_t i = 0; i < block.size(); ++i) {
-    const ShellFeMeasurement tube{block.column("k")[i], block.column("h")[i], block.column("d")[i], block.column("d0")[i]};
-    const ShellFeValues values = shell_fe_tube(tube, parameters, model);
-    const bool ok = values.inverse.status == ShellFeStatus::ok;
-    ++counts[values.inverse.status];
-    seconds += values.inverse.seconds;
-    std::vector<std::string> cells = table.rows[i];
-    // A flagged tube gets empty cells, never "nan" (its status says why).
-    for (const Output& output : shell_fe_outputs) {
-      cells.push_back(ok ? format_double(values.value(output.quantity) / unit_of(output.unit).to_si) : "");
-    }
-    cells.push_back(ok ? format_double(values.inverse.unstressed_thickness * 1e9) : "");
-    cells.emplace_back(to_string(values.inverse.status));
-    writer.add_row(cells);
-  }
-  write_result(options.out, writer.text(), overwrite);
-  std::ostream& report = report_stream(options.out);
-  report << table.rows.size() << (table.rows.size() == 1 ? " tube" : " tubes") << " from " << table.path
-            << " through the finite-element shell inverse (" << describe(model) << "; " << instrument_text(options, parameters)
-            << "), " << format_double(seconds) << " s\n";
-  for (const auto& [status, count] : counts) {
-    report << "  " << std::left << std::setw(28) << to_string(status) << count;
-    if (status != ShellFeStatus::ok) report << "  (" << describe(status) << ")";
-    report << "\n";
-  }
-  report << wrote(options.out) << "\n";
-  return 0;
-}
-
-int evaluate_file(const EvalOptions& options, const Instrument& parameters, const ShellFeOptions* model,
-                  const Evaluator* corrected = nullptr) {
+int evaluate_file(const EvalOptions& options, const Instrument& parameters, Fidelity fidelity,
+                  const ShellFeOptions& model_options) {
   if (options.out.empty()) throw InputError(std::string(command), "--in needs --out (the results CSV to write)");
   for (const auto& [text, key] : {std::pair{&options.k, "--k"}, std::pair{&options.h_nm, "--h-nm"},
                                   std::pair{&options.d_um, "--d-um"}, std::pair{&options.d0_um, "--d0-um"}}) {
@@ -339,13 +281,11 @@ int evaluate_file(const EvalOptions& options, const Instrument& parameters, cons
     auto values = input_column(table, required);
     if (!values) {
       const Quantity* quantity = find_quantity(required);
-      throw InputError(file_location(table.path, 0),
-                       "no column for " + std::string(quantity->description) + ": expected '" +
-                           default_column_name(*quantity) + "' (columns: " + [&] {
-                             std::string names;
-                             for (const auto& name : table.header) names += (names.empty() ? "" : ", ") + name;
-                             return names;
-                           }() + ")");
+      std::string names;
+      for (const auto& name : table.header) names += (names.empty() ? "" : ", ") + name;
+      throw InputError(file_location(table.path, 0), "no column for " + std::string(quantity->description) +
+                                                         ": expected '" + default_column_name(*quantity) +
+                                                         "' (columns: " + names + ")");
     }
     block.set_column(required, values->si());
     if (required == "d") d = values;
@@ -356,40 +296,30 @@ int evaluate_file(const EvalOptions& options, const Instrument& parameters, cons
   const auto thickness = input_column(table, "h");
   if (thickness) block.set_column("h", thickness->si());
   const bool has_h = thickness.has_value();
-  if (model != nullptr) {
-    if (!has_h) {
-      throw InputError(file_location(table.path, 0), "--fidelity shell_fe needs the wall thickness: a column h_nm (or h_um, ...)");
-    }
-    return write_shell_fe_file(options, parameters, *model, table, block, overwrite);
+  if (fidelity != Fidelity::closed_form && !has_h) {
+    throw InputError(file_location(table.path, 0), missing_thickness(fidelity) + ": a column h_nm (or h_um, ...)");
   }
-
-  const ThinShellTurgor turgor(parameters, command);
-  const ThinShellModulus modulus;
-  if (corrected != nullptr) {
-    if (!has_h) {
-      throw InputError(file_location(table.path, 0), "--fidelity corrected needs the wall thickness: a column h_nm (or h_um, ...)");
-    }
-    run_plan(std::vector<const Evaluator*>{corrected}, block);
-  } else {
-    run_plan(plan_for(turgor, modulus, has_h), block);
-  }
+  const EvalModel model(fidelity, parameters, model_options, has_h);
 
   std::vector<std::string> header = table.header;
-  std::vector<const Output*> written;
-  for (const Output& output : corrected != nullptr ? std::span<const Output>(corrected_outputs) : std::span<const Output>(outputs)) {
-    if (output.needs_h && !has_h) continue;
-    const std::string name = column_name(output.quantity, unit_of(output.unit));
-    if (table.has_column(name)) {
-      throw InputError(file_location(table.path, 0), "the input already has a column '" + name +
+  for (const Output* output : model.written()) header.push_back(column_name(output->quantity, unit_of(output->unit)));
+  header.emplace_back("status");
+  for (std::size_t c = table.header.size(); c < header.size(); ++c) {
+    if (table.has_column(header[c])) {
+      throw InputError(file_location(table.path, 0), "the input already has a column '" + header[c] +
                                                          "', which eval writes: rename or drop it");
     }
-    header.push_back(name);
-    written.push_back(&output);
   }
-  if (table.has_column("status")) {
-    throw InputError(file_location(table.path, 0), "the input already has a column 'status', which eval writes");
+
+  std::ostream& report = report_stream(options.out);
+  if (model.slow()) {
+    report << table.rows.size() << (table.rows.size() == 1 ? " tube" : " tubes") << " through the "
+           << model_text(fidelity, model_options) << ", about " << format_double(model.seconds_per_tube())
+           << " s of one core each:\n";
   }
-  header.emplace_back("status");
+  const auto start = std::chrono::steady_clock::now();
+  model.run(block, report);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   CsvWriter writer(header);
   std::map<SampleStatus, std::size_t> counts;
@@ -397,7 +327,7 @@ int evaluate_file(const EvalOptions& options, const Instrument& parameters, cons
     const SampleStatus status = block.status()[i];
     ++counts[status];
     std::vector<std::string> cells = table.rows[i];
-    for (const Output* output : written) {
+    for (const Output* output : model.written()) {
       // A flagged sample gets empty cells, never "nan" (its status says why).
       const double value = block.column(output->quantity)[i];
       cells.push_back(status == SampleStatus::ok ? format_double(value / unit_of(output->unit).to_si) : "");
@@ -407,11 +337,11 @@ int evaluate_file(const EvalOptions& options, const Instrument& parameters, cons
   }
   write_result(options.out, writer.text(), overwrite);
 
-  std::ostream& report = report_stream(options.out);
-  report << table.rows.size() << (table.rows.size() == 1 ? " tube" : " tubes") << " from " << table.path << " (rho = " << options.rho_um
-            << " um, nu = " << format_double(parameters.poisson_ratio) << ", k_sys = "
-            << (std::isinf(parameters.sensor_stiffness_N_per_m) ? "inf" : options.k_sys + " N/m") << ")"
-            << (has_h ? "" : "; no thickness column h_nm: turgor outputs only") << "\n";
+  report << table.rows.size() << (table.rows.size() == 1 ? " tube" : " tubes") << " from " << table.path << " ("
+         << model_text(fidelity, model_options) << "; " << instrument_text(options, parameters) << ")"
+         << (has_h ? "" : "; no thickness column h_nm: turgor outputs only");
+  if (model.slow()) report << ", " << format_double(seconds) << " s";
+  report << "\n";
   for (const auto& [status, count] : counts) {
     report << "  " << std::left << std::setw(28) << to_string(status) << count;
     if (status != SampleStatus::ok) report << "  (" << describe(status) << ")";
@@ -421,7 +351,6 @@ int evaluate_file(const EvalOptions& options, const Instrument& parameters, cons
   return 0;
 }
 
-
 }  // namespace
 
 int run_eval(const Arguments& arguments) {
@@ -429,7 +358,7 @@ int run_eval(const Arguments& arguments) {
   po::options_description described("options");
   described.add_options()
       ("k", po::value(&options.k), "measured apparent stiffness [N/m] (one tube)")
-      ("h-nm", po::value(&options.h_nm), "wall thickness [nm] (optional: without it, turgor outputs only)")
+      ("h-nm", po::value(&options.h_nm), "wall thickness [nm] (optional at closed_form: without it, turgor outputs only)")
       ("d-um", po::value(&options.d_um), "turgid diameter [um]")
       ("d0-um", po::value(&options.d0_um), "plasmolysed diameter [um]")
       ("rho-um", po::value(&options.rho_um), "probe radius [um] (required)")
@@ -437,15 +366,16 @@ int run_eval(const Arguments& arguments) {
       ("k-sys", po::value(&options.k_sys), "sensor stiffness [N/m] in series with the tube (default: ideal)")
       ("in", po::value(&options.in), "CSV of tubes: columns k_N_per_m, d_um, d0_um [, h_nm] (other units allowed, e.g. h_um); "
                                      "- reads standard input")
-      ("out", po::value(&options.out), "results CSV: the input columns, p_MPa, E_MPa, alpha_um, phi, lambda, "
-                                       "hoop_stress_MPa, wall_stiffness_N_per_m, status; - writes it to standard "
-                                       "output (the report then goes to standard error)")
+      ("out", po::value(&options.out), "results CSV: the input columns, the fidelity's outputs (closed_form: p_MPa, E_MPa, "
+                                       "alpha_um, phi, lambda, hoop_stress_MPa, wall_stiffness_N_per_m; corrected: p_MPa, "
+                                       "E_MPa, lambda, hoop_stress_MPa, wall_stiffness_N_per_m; shell_fe: the same and "
+                                       "h0_nm), then status; - writes it to standard output (the report then goes to "
+                                       "standard error)")
       ("force", po::bool_switch(&options.force), "overwrite --out if it exists")
-      ("fidelity", po::value(&options.fidelity), "the model inverted: closed_form (default; the thin shell, instant), "
-                                                 "corrected (the closed form corrected to the finite-element shell, "
-                                                 "instant; needs h; writes p_MPa, E_MPa, status) or shell_fe (the "
-                                                 "finite-element shell, minutes per tube; needs h; writes p_MPa, E_MPa, "
-                                                 "lambda, hoop_stress_MPa, wall_stiffness_N_per_m, h0_nm, status). The "
+      ("fidelity", po::value(&options.fidelity), "the model inverted, as a campaign's fidelity = ...: closed_form (default; "
+                                                 "the thin shell, instant), corrected (the closed form corrected to the "
+                                                 "finite-element shell, instant; needs h) or shell_fe (the finite-element "
+                                                 "shell, seconds per tube, progress on standard error; needs h). The "
                                                  "options below are the finite-element model's (corrected refuses values "
                                                  "other than those it was fitted for):");
   options.model.declare(described);
@@ -466,28 +396,20 @@ int run_eval(const Arguments& arguments) {
   if (!options.out.empty() && options.in.empty()) {
     throw InputError(std::string(command), "--out needs --in (a single tube is printed, not written)");
   }
-  const Instrument parameters = instrument(options);
-  if (options.fidelity == "closed_form") {
-    for (const char* flag : {"law", "geometry", "mesh-file", "mesh", "contact", "substrate", "bending", "half-model", "tube-length-um",
-                             "probe-distance-um", "window-uN"}) {
+  const Instrument parameters = parse_instrument(instrument_flags(command, options.rho_um, options.nu, options.k_sys),
+                                                 ProbeRadius::required);
+  const Fidelity fidelity = parse_fidelity(options.fidelity, command, "--fidelity");
+  if (fidelity == Fidelity::closed_form) {
+    for (const char* flag : {"law", "geometry", "mesh-file", "mesh", "contact", "substrate", "bending", "half-model",
+                             "tube-length-um", "probe-distance-um", "window-uN"}) {
       if (values.count(flag)) {
         throw InputError(std::string(command), "--" + std::string(flag) + " needs --fidelity shell_fe (or corrected)");
       }
     }
-    return options.in.empty() ? evaluate_point(options, parameters, nullptr) : evaluate_file(options, parameters, nullptr);
-  }
-  if (options.fidelity == "corrected") {
-    // The model options say what the correction must have been fitted for: refused otherwise,
-    // naming the flag typed.
-    const CorrectedTurgorModulus corrected(parameters, options.model.parse(command), command, OptionNames::command_flags);
-    return options.in.empty() ? evaluate_point(options, parameters, &corrected)
-                              : evaluate_file(options, parameters, nullptr, &corrected);
-  }
-  if (options.fidelity != "shell_fe") {
-    throw_bad_value(command, "--fidelity", options.fidelity, "closed_form, corrected or shell_fe");
   }
   const ShellFeOptions model = options.model.parse(command);
-  return options.in.empty() ? evaluate_point_shell_fe(options, parameters, model) : evaluate_file(options, parameters, &model);
+  return options.in.empty() ? evaluate_point(options, parameters, fidelity, model)
+                            : evaluate_file(options, parameters, fidelity, model);
 }
 
 }  // namespace growthuq::cli

@@ -44,12 +44,7 @@ struct Target {
 // The measured variable and unit a column name like "k_N_per_m" spells, if any.
 std::optional<Target> target_from_column(std::string_view column) {
   for (const std::string_view name : measured_variables) {
-    const Quantity& quantity = *find_quantity(name);
-    for (const Unit& unit : known_units()) {
-      if (unit.dimension == quantity.dimension && column_name(name, unit) == column) {
-        return Target{std::string(name), &unit};
-      }
-    }
+    if (const Unit* unit = unit_of_column(*find_quantity(name), column)) return Target{std::string(name), unit};
   }
   return std::nullopt;
 }

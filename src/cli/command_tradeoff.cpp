@@ -23,6 +23,7 @@
 #include "growthuq/campaign/tradeoff_run.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/fe/shell_fe_evaluator.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "growthuq/pool/pool.hpp"
 #include "options.hpp"

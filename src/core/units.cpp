@@ -105,6 +105,13 @@ std::string column_name(std::string_view quantity, const Unit& unit) {
   return name;
 }
 
+const Unit* unit_of_column(const Quantity& quantity, std::string_view column) {
+  for (const Unit& unit : units) {
+    if (unit.dimension == quantity.dimension && column_name(quantity.name, unit) == column) return &unit;
+  }
+  return nullptr;
+}
+
 std::string default_column_name(const Quantity& quantity) {
   return column_name(quantity.name, find_unit(quantity.default_unit, "", "unit"));
 }

@@ -158,6 +158,12 @@ void evaluate_checked(const Evaluator& evaluator, SampleBlock& block) {
   check.after(evaluator, block);
 }
 
+double seconds_per_sample(std::span<const Evaluator* const> plan) {
+  double seconds = 0.0;
+  for (const Evaluator* evaluator : plan) seconds += evaluator->seconds_per_sample();
+  return seconds;
+}
+
 void run_plan(std::span<const Evaluator* const> plan, SampleBlock& block) {
   DeclarationCheck check(block);  // one look at the block before each evaluator, the last one's after
   for (const Evaluator* evaluator : plan) {

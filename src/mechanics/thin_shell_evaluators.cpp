@@ -2,6 +2,8 @@
 // virtual call per sample. Samples flagged on entry are skipped and keep NaN outputs.
 #include "growthuq/mechanics/thin_shell_evaluators.hpp"
 
+#include <cmath>
+#include <limits>
 #include <utility>
 
 namespace growthuq {
@@ -76,6 +78,30 @@ void ThinShellModulus::evaluate(SampleBlock& block) const {
     E[i] = result.E;
     hoop_stress[i] = result.hoop_stress;
     wall_stiffness[i] = result.wall_stiffness;
+  }
+}
+
+void WallStress::evaluate(SampleBlock& block) const {
+  const std::span<const double> p = std::as_const(block).column("p");
+  const std::span<const double> E = std::as_const(block).column("E");
+  const std::span<const double> d = std::as_const(block).column("d");
+  const std::span<const double> d0 = std::as_const(block).column("d0");
+  const std::span<const double> h = std::as_const(block).column("h");
+  const std::span<const double> strain = strain_column(block);
+  const std::span<double> lambda = block.add_column("lambda");
+  const std::span<double> hoop_stress = block.add_column("hoop_stress");
+  const std::span<double> wall_stiffness = block.add_column("wall_stiffness");
+  const std::span<SampleStatus> status = block.status();
+  for (std::size_t i = 0; i < block.size(); ++i) {
+    if (status[i] != SampleStatus::ok) continue;
+    const TubeDiameters diameters = diameters_of(d, d0, strain, i);
+    lambda[i] = diameters.lambda;
+    hoop_stress[i] = p[i] * diameters.d / (2.0 * h[i]);  // the modulus is the caller's E, not hoop / ln lambda
+    wall_stiffness[i] = E[i] * h[i];
+    if (!std::isfinite(lambda[i]) || !std::isfinite(hoop_stress[i]) || !std::isfinite(wall_stiffness[i])) {
+      lambda[i] = hoop_stress[i] = wall_stiffness[i] = std::numeric_limits<double>::quiet_NaN();
+      status[i] = SampleStatus::out_of_range;
+    }
   }
 }
 

@@ -8,7 +8,9 @@
 
 #include "campaign/campaign_models.hpp"
 #include "growthuq/campaign/campaign_file.hpp"
+#include "growthuq/campaign/campaign_run.hpp"
 #include "growthuq/core/error.hpp"
+#include "growthuq/fe/shell_fe_evaluator.hpp"
 #include "support/campaign_text.hpp"
 
 using namespace growthuq;
@@ -49,9 +51,20 @@ TEST_CASE("fidelity: the three names, the old name, the default, and a line's ow
                                         folder.path());
   CHECK(mixed.fidelity_of(mixed.lines[0]) == Fidelity::closed_form);
   CHECK(mixed.fidelity_of(mixed.lines[1]) == Fidelity::shell_fe);
-  // Finite-element samples go out one by one; the analytic lines keep the campaign's chunks.
-  CHECK(mixed.chunk_size_of(mixed.lines[0]) == 4096);
-  CHECK(mixed.chunk_size_of(mixed.lines[1]) == 1);
+}
+
+TEST_CASE("a line's chunks follow its models' stated cost: finite-element samples one by one") {
+  // wild_type runs shell_fe, pme48 corrected, xeg113 closed_form (the campaign's).
+  const PreparedCampaign prepared(read_campaign(std::string(GROWTHUQ_SOURCE_DIR) + "/tests/campaign/data/fidelity_campaign.ini"));
+  REQUIRE(prepared.lines().size() == 3);
+  for (const PreparedLine& line : prepared.lines()) {
+    const bool fe = prepared.campaign().fidelity_of(line.campaign_line) == Fidelity::shell_fe;
+    CAPTURE(line.campaign_line.name);
+    CHECK(prepared.has_slow_samples(line) == fe);
+    CHECK(prepared.chunk_size_of(line) == (fe ? 1u : 4096u));
+    if (fe) CHECK(seconds_per_sample(line.plan) == shell_fe_seconds_per_sample(ShellFeMesh::coarse));
+    if (!fe) CHECK(seconds_per_sample(line.plan) == 0.0);
+  }
 }
 
 TEST_CASE("[shell_fe]: every key read into the model's options") {
@@ -113,10 +126,11 @@ TEST_CASE("each fidelity plans its own turgor and modulus models, the rest alike
   const Campaign campaign = parse_campaign(valid, folder.path());
   CHECK(model_names(campaign, Fidelity::closed_form) ==
         std::vector<std::string>{"thin_shell_turgor", "thin_shell_modulus", "viscosity", "growth"});
+  // The fidelities that write p and E together also give the closed form's wall stresses.
   CHECK(model_names(campaign, Fidelity::shell_fe) ==
-        std::vector<std::string>{"shell_fe_turgor_modulus", "viscosity", "growth"});
+        std::vector<std::string>{"shell_fe_turgor_modulus", "wall_stress", "viscosity", "growth"});
   CHECK(model_names(campaign, Fidelity::corrected) ==
-        std::vector<std::string>{"corrected_turgor_modulus", "viscosity", "growth"});
+        std::vector<std::string>{"corrected_turgor_modulus", "wall_stress", "viscosity", "growth"});
 }
 
 TEST_CASE("fidelity corrected refuses model options it was not fitted for, naming the key") {

@@ -1,4 +1,4 @@
-// What a run guarantees about its output directory (README, "What is atomic, what is locked"):
+// What a run guarantees about its output directory (src/cli/README.md, "What a run guarantees"):
 // one live run per directory (a second is refused naming the first, a dead one's lock taken
 // over), results committed together only when all are complete (a stop during the final writes
 // commits nothing), a full disk keeping the checkpoint for --resume, and writers killed by a

@@ -151,7 +151,7 @@ TEST_CASE("indent and eval --fidelity: bad input is one line naming the flag, no
       {std::string("indent ") + tube + " --depth-um 9 --out c.csv", "--depth-um = '9': expected a depth in [0, d0]"},
       {std::string("indent ") + tube + " --field wall.vtk --out c.csv", "--field = 'wall.vtk': expected a file name ending in .xdmf"},
       {std::string("indent ") + tube, "missing --out"},
-      {"eval --fidelity fast --rho-um 0.25 --k 2 --d-um 6.4 --d0-um 5.35 --h-nm 200", "--fidelity = 'fast': expected closed_form, corrected or shell_fe"},
+      {"eval --fidelity fast --rho-um 0.25 --k 2 --d-um 6.4 --d0-um 5.35 --h-nm 200", "--fidelity = 'fast': expected closed_form (the thin shell's closed forms"},
       {"eval --law stvk --rho-um 0.25 --k 2 --d-um 6.4 --d0-um 5.35", "--law needs --fidelity shell_fe"},
       {"eval --fidelity shell_fe --rho-um 0.25 --k 2 --d-um 6.4 --d0-um 5.35", "--h-nm is required with --fidelity shell_fe"},
   };

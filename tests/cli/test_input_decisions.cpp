@@ -1,4 +1,4 @@
-// Input that changed results without a word, refused at the command line (README, "Input that
+// Input that changed results without a word, refused at the command line (src/cli/README.md, "Input that
 // changes results"): an eval column named like an input with no unit of it, a line given twice.
 #include <doctest/doctest.h>
 

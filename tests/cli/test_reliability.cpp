@@ -1,4 +1,4 @@
-// The guarantees of README's "What a run guarantees", end to end through the CLI: a run refused
+// The guarantees of src/cli/README.md's "What a run guarantees", end to end through the CLI: a run refused
 // by the lock touches nothing; a full disk during results.h5 gives one line and no crash, and
 // keeps the old results and the checkpoint; option abbreviations are errors; every output path
 // is checked before the work; a command's outputs commit together or not at all.

@@ -87,11 +87,11 @@ TEST_CASE("running a plan fills columns and keeps the first status") {
   CHECK(to_string(block.status()[1]) == "invalid_input");
 }
 
-TEST_CASE("every status code has its own name and sentence and a row in README's statuses table") {
+TEST_CASE("every status code has its own name and sentence and a row in campaigns/README.md's statuses table") {
   // The codes run 0 .. last_sample_status without a gap (results.h5 writes names[code]); the
   // code after the last has no name, so a status appended without moving last_sample_status
   // shows up here.
-  std::ifstream file(std::string(GROWTHUQ_SOURCE_DIR) + "/README.md");
+  std::ifstream file(std::string(GROWTHUQ_SOURCE_DIR) + "/campaigns/README.md");
   REQUIRE(file);
   const std::string readme((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
   std::set<std::string> names;

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/correction/corrected_closed_form.hpp"
 #include "growthuq/correlation/matrix_file.hpp"
 #include "growthuq/io/csv.hpp"
 #include "growthuq/mechanics/mechanical_correlation.hpp"
@@ -99,6 +100,35 @@ TEST_CASE("eval: bad flags are one-line errors with exit code 2") {
   const CliOutcome mixed = scratch.run("eval --rho-um 0.5 --k 2 --in tubes.csv --out r.csv");
   CHECK(mixed.exit_code == 2);
   CHECK(mixed.err.find("--k cannot be combined with --in") != std::string::npos);
+}
+
+TEST_CASE("eval --fidelity corrected runs the campaign's evaluator: its p and E, and the wall stresses from them") {
+  const Scratch scratch("eval_corrected_values");
+  const CliOutcome run = scratch.run(corrected_tube);
+  CAPTURE(run.err);
+  REQUIRE(run.exit_code == 0);
+  const auto value = [&](const std::string& quantity) {
+    const auto at = run.out.find("  " + quantity + " ");
+    REQUIRE(at != std::string::npos);
+    return parse_double(run.out.substr(at + 2 + 16, 22), "test", quantity);
+  };
+  // The library's corrected inverse of the same tube (corrected_closed_form.hpp).
+  Instrument instrument;
+  instrument.probe_radius_m = 0.25e-6;
+  const CorrectedInverse reference =
+      corrected_inverse(2.0, diameters_in_si(6.4e-6, 5.35e-6), 200e-9, instrument, shipped_correction());
+  REQUIRE(reference.status == SampleStatus::ok);
+  CHECK(value("p") == doctest::Approx(reference.p * 1e-6).epsilon(1e-10));
+  CHECK(value("E") == doctest::Approx(reference.E * 1e-6).epsilon(1e-10));
+  // Hoop equilibrium p d / (2 h) and E h from the corrected p and E, not the closed form's.
+  CHECK(value("hoop_stress") == doctest::Approx(value("p") * 6.4e3 / (2 * 200)).epsilon(1e-10));
+  CHECK(value("wall_stiffness") == doctest::Approx(value("E") * 1e6 * 200e-9).epsilon(1e-10));
+  CHECK(value("lambda") == doctest::Approx(6.4 / 5.35).epsilon(1e-10));
+  CHECK(run.out.find("  alpha") == std::string::npos);  // the closed form's own
+  // The campaign's old name of the closed form is eval's too.
+  const CliOutcome old_name = scratch.run("eval --fidelity thin_shell --rho-um 0.5 --k 2.87 --d-um 6.56 --d0-um 5.35");
+  CHECK(old_name.exit_code == 0);
+  CHECK(old_name.out.find("  p               0.2528077871117") != std::string::npos);
 }
 
 TEST_CASE("eval --fidelity corrected: a model option the correction was not fitted for is refused by its flag") {

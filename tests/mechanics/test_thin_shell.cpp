@@ -252,3 +252,29 @@ TEST_CASE("evaluators: turgor needs no thickness, statuses flow through a plan")
   CHECK(std::isfinite(block.column("p")[3]));
   for (std::size_t i = 1; i < 4; ++i) CHECK(std::isnan(block.column("E")[i]));
 }
+
+TEST_CASE("WallStress: from the closed form's own p and E it gives ThinShellModulus's hoop stress and E h, and the turgor's lambda") {
+  const ThinShellTurgor turgor(probe(0.5 * um), "test");
+  const ThinShellModulus modulus;
+  SampleBlock block(3);
+  block.set_column("k", std::vector<double>{2.87, 1.2, 6.0});
+  block.set_column("d", std::vector<double>{6.56 * um, 5.9 * um, 7.8 * um});
+  block.set_column("d0", std::vector<double>{5.35 * um, 5.1 * um, 6.0 * um});
+  block.set_column("h", std::vector<double>{145 * nm, 90 * nm, 300 * nm});
+  const std::vector<const Evaluator*> closed_form{&turgor, &modulus};
+  run_plan(closed_form, block);
+
+  // A second block holding only the inputs and the closed form's p and E, through WallStress.
+  SampleBlock wall(3);
+  for (const char* name : {"k", "d", "d0", "h", "p", "E"}) wall.set_column(name, std::as_const(block).column(name));
+  const WallStress stress;
+  run_plan(std::vector<const Evaluator*>{&stress}, wall);
+  for (std::size_t i = 0; i < 3; ++i) {
+    CAPTURE(i);
+    REQUIRE(block.status()[i] == SampleStatus::ok);
+    CHECK(wall.status()[i] == SampleStatus::ok);
+    CHECK(wall.column("hoop_stress")[i] == doctest::Approx(block.column("hoop_stress")[i]).epsilon(1e-15));
+    CHECK(wall.column("wall_stiffness")[i] == doctest::Approx(block.column("wall_stiffness")[i]).epsilon(1e-14));
+    CHECK(wall.column("lambda")[i] == doctest::Approx(block.column("lambda")[i]).epsilon(1e-15));
+  }
+}

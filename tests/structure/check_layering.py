@@ -17,7 +17,7 @@ import tempfile
 # synthetic), where evaluation runs (pool), the campaign, and the command line on top.
 CONCEPT_ORDER = [
     "core", "evaluation", "stats", "io", "distributions", "correlation", "sampling", "sensitivity",
-    "mechanics", "fe", "correction", "relaxation", "growth", "rawdata", "synthetic", "pool", "campaign", "cli",
+    "mechanics", "fe", "correction", "fidelity", "relaxation", "growth", "rawdata", "synthetic", "pool", "campaign", "cli",
 ]
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')

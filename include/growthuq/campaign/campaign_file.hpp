@@ -17,6 +17,7 @@
 #include "growthuq/fe/indentation.hpp"
 #include "growthuq/mechanics/mechanical_correlation.hpp"
 #include "growthuq/mechanics/instrument.hpp"
+#include "growthuq/fidelity/fidelity.hpp"
 #include "growthuq/sampling/latin_hypercube.hpp"
 
 namespace growthuq {
@@ -27,17 +28,6 @@ enum class CorrelationSource {
   file,     // a matrix CSV (header row of names, then the matrix)
   physics,  // derived from the forward thin-shell model (Eq. (M16), src/mechanics/README.md)
 };
-
-// Which model turns measurements into turgor and modulus (README, "Fidelity").
-enum class Fidelity {
-  closed_form,  // the thin shell's closed forms (hoop and Arnoldi relations); old name thin_shell
-  corrected,    // the closed form times a correction fitted to the finite-element inverse
-  shell_fe,     // the finite-element shell's inverse, one simulation per sample
-};
-std::string_view to_string(Fidelity);  // "closed_form", "corrected", "shell_fe"
-// "closed_form" (or its old name "thin_shell"), "corrected", "shell_fe"; InputError naming
-// `location` and `key` otherwise.
-Fidelity parse_fidelity(std::string_view text, std::string_view location, std::string_view key);
 
 struct CampaignLine {
   std::string name;                // from the section header [line NAME]
@@ -97,11 +87,6 @@ struct Campaign {
 
   const CampaignLine* find_line(std::string_view name) const;
   Fidelity fidelity_of(const CampaignLine& line) const { return line.fidelity.value_or(fidelity); }
-  // Samples per unit of work of a line: one finite-element sample by default (they take
-  // minutes each and balance only when handed out one by one), `chunk_size` otherwise.
-  std::size_t chunk_size_of(const CampaignLine& line) const {
-    return fidelity_of(line) == Fidelity::shell_fe ? shell_fe_chunk_size : chunk_size;
-  }
 };
 
 // Reads and validates a campaign file: unknown sections or keys, missing required keys, bad

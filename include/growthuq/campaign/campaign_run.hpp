@@ -85,6 +85,11 @@ class PreparedCampaign {
   // The line's design (identical on every process for the same campaign and seed).
   LineDesign design(const PreparedLine& line) const;
 
+  // Whether the line's models are slow (evaluator.hpp, seconds_per_sample): its samples are then
+  // handed out `[shell_fe] chunk_size` at a time (one by default: they take seconds each and
+  // balance only when handed out one by one), `chunk_size` at a time otherwise.
+  bool has_slow_samples(const PreparedLine& line) const;
+  std::size_t chunk_size_of(const PreparedLine& line) const;
 
   // The chunk's computed outputs (SI), output after output, then each sample's status as a
   // double: (computed_outputs().size() + 1) * (range.end - range.begin) values, read back with

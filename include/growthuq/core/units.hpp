@@ -97,6 +97,11 @@ const Quantity* find_quantity(std::string_view name);
 // "<name>_<suffix>" ("h_nm"); a dimensionless unit "1" gives the bare name.
 std::string column_name(std::string_view quantity, const Unit& unit);
 
+// The unit of the quantity's dimension that a column named "<name>_<suffix>" (column_name) gives
+// `quantity` in, or nullptr when `column` is no such name. The one reader of such names, for
+// every file of measurements (`growthuq eval --in`, `growthuq fit`).
+const Unit* unit_of_column(const Quantity& quantity, std::string_view column);
+
 // The column name of `quantity` in its default unit.
 std::string default_column_name(const Quantity& quantity);
 

@@ -30,10 +30,22 @@ class Evaluator {
     return {};
   }
 
+  // The cost of one sample, in seconds of one core as measured for this model (0: microseconds,
+  // the analytic models). What the scheduler asks of a model: a line whose models cost at least
+  // slow_sample_seconds is handed out sample by sample, its run time is estimated before it
+  // starts (`growthuq check`), and `growthuq eval` prints progress tube by tube.
+  virtual double seconds_per_sample() const { return 0.0; }
+
   // Adds every column of writes() to `block`. Samples whose status is not ok on entry are
   // skipped (their outputs stay NaN).
   virtual void evaluate(SampleBlock& block) const = 0;
 };
+
+// The cost from which a model counts as slow (seconds_per_sample).
+inline constexpr double slow_sample_seconds = 0.1;
+
+// The seconds of one core per sample of `plan` (the sum of its evaluators').
+double seconds_per_sample(std::span<const Evaluator* const> plan);
 
 // The evaluators, in an order that can run, that turn `inputs` into `outputs`. Among
 // `available` the first that writes a needed quantity is chosen; an evaluator is chosen only

@@ -3,6 +3,10 @@
 //   ThinShellTurgor   reads k, d, d0      writes lambda, alpha, phi, p
 //   ThinShellModulus  reads p, d, d0, h   writes E, hoop_stress, wall_stiffness
 //   ThinShellForward  reads p, E, h, d0   writes d, k          (used by `growthuq correlate`)
+//   WallStress        reads p, E, d, d0, h   writes lambda, hoop_stress, wall_stiffness
+// WallStress gives a model that writes p and E together (fidelity/fidelity.hpp) the closed form's
+// derived outputs: the hoop stress p d / (2 h) is the far field's exact equilibrium, whatever
+// gave p.
 // Each loops over contiguous columns calling the closed forms of thin_shell.hpp. Turgor and
 // modulus take the stretch from the block's hoop_strain column when it has one (formed where the
 // diameters entered, in their measured unit: add_hoop_strain), and from d and d0 in SI otherwise,
@@ -43,6 +47,14 @@ class ThinShellModulus final : public Evaluator {
   std::string_view name() const override { return "thin_shell_modulus"; }
   std::vector<std::string> reads() const override { return {"p", "d", "d0", "h"}; }
   std::vector<std::string> writes() const override { return {"E", "hoop_stress", "wall_stiffness"}; }
+  void evaluate(SampleBlock& block) const override;
+};
+
+class WallStress final : public Evaluator {
+ public:
+  std::string_view name() const override { return "wall_stress"; }
+  std::vector<std::string> reads() const override { return {"p", "E", "d", "d0", "h"}; }
+  std::vector<std::string> writes() const override { return {"lambda", "hoop_stress", "wall_stiffness"}; }
   void evaluate(SampleBlock& block) const override;
 };
 
