@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "campaign/progress.hpp"
 #include "commands.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -50,6 +51,7 @@ struct EvalOptions {
   std::string in;
   std::string out;
   bool force = false;
+  bool quiet = false;  // no progress of a slow fidelity on stderr
   std::string fidelity = "closed_form";
   ShellFeFlags model;  // the finite-element model's options (shell_fe; corrected checks them)
 };
@@ -117,15 +119,16 @@ class EvalModel {
   bool slow() const { return seconds_per_sample(plan_) >= slow_sample_seconds; }
   double seconds_per_tube() const { return seconds_per_sample(plan_); }
 
-  // Runs the plan on `block`; a slow model tube by tube, saying on `progress` how far it is.
-  void run(SampleBlock& block, std::ostream& progress) const {
+  // Runs the plan on `block`; a slow model tube by tube, saying on `log` how far it is (the
+  // tubes done, the time and the time left, as `mode` says).
+  void run(SampleBlock& block, ProgressMode mode, std::ostream& log) const {
     if (!slow()) {
       run_plan(plan_, block);
       return;
     }
     const std::vector<std::string> inputs = block.quantities();
     for (const Output* output : written_) block.add_column(output->quantity);
-    const auto start = std::chrono::steady_clock::now();
+    StepProgress progress(block.size() > 1 ? mode : ProgressMode::none, log, "eval", "tube", block.size());
     for (std::size_t i = 0; i < block.size(); ++i) {
       SampleBlock one(1);
       for (const std::string& name : inputs) one.set_column(name, std::vector<double>{std::as_const(block).column(name)[i]});
@@ -133,11 +136,9 @@ class EvalModel {
       run_plan(plan_, one);
       for (const Output* output : written_) block.column(output->quantity)[i] = one.column(output->quantity)[0];
       block.status()[i] = one.status()[0];
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      progress << "  tube " << (i + 1) << " of " << block.size() << ": " << to_string(one.status()[0]) << ", "
-               << format_double(seconds) << " s so far\n"
-               << std::flush;
+      progress.advance();
     }
+    progress.finish();
   }
 
  private:
@@ -189,12 +190,13 @@ int evaluate_point(const EvalOptions& options, const Instrument& parameters, Fid
     block.set_column("h", std::vector<double>{from_nm(positive_flag(options.h_nm, "--h-nm", "a positive thickness in nm"))});
   }
   const EvalModel model(fidelity, parameters, model_options, has_h);
-  if (model.slow()) {
-    std::cerr << "inverting the tube with the " << model_text(fidelity, model_options) << ": about "
-              << format_double(model.seconds_per_tube()) << " s of one core\n";
+  const ProgressMode progress = choose_progress_mode(options.quiet);
+  if (model.slow() && progress != ProgressMode::none) {
+    std::cerr << "eval: inverting the tube with the " << model_text(fidelity, model_options) << ": about "
+              << format_double(model.seconds_per_tube()) << " s of one core (--quiet: no such line)\n";
   }
   const auto start = std::chrono::steady_clock::now();
-  model.run(block, std::cerr);
+  model.run(block, progress, std::cerr);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const SampleStatus status = block.status()[0];
@@ -312,13 +314,8 @@ int evaluate_file(const EvalOptions& options, const Instrument& parameters, Fide
   }
 
   std::ostream& report = report_stream(options.out);
-  if (model.slow()) {
-    report << table.rows.size() << (table.rows.size() == 1 ? " tube" : " tubes") << " through the "
-           << model_text(fidelity, model_options) << ", about " << format_double(model.seconds_per_tube())
-           << " s of one core each:\n";
-  }
   const auto start = std::chrono::steady_clock::now();
-  model.run(block, report);
+  model.run(block, choose_progress_mode(options.quiet), std::cerr);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   CsvWriter writer(header);
@@ -372,6 +369,8 @@ int run_eval(const Arguments& arguments) {
                                        "h0_nm), then status; - writes it to standard output (the report then goes to "
                                        "standard error)")
       ("force", po::bool_switch(&options.force), "overwrite --out if it exists")
+      ("quiet", po::bool_switch(&options.quiet), "no progress on stderr (shell_fe: a line before a single tube's "
+                                                 "inverse; for a file, the tubes done and the time left)")
       ("fidelity", po::value(&options.fidelity), "the model inverted, as a campaign's fidelity = ...: closed_form (default; "
                                                  "the thin shell, instant), corrected (the closed form corrected to the "
                                                  "finite-element shell, instant; needs h) or shell_fe (the finite-element "
