@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "correction/correction_training.hpp"
 #include "growthuq/correction/corrected_closed_form.hpp"
 #include "growthuq/io/csv.hpp"
 #include "growthuq/io/output_file.hpp"

@@ -14,6 +14,7 @@
 #include "fe/shell_fe_problem.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "correction_training.hpp"
 
 namespace growthuq {
 namespace {
@@ -109,8 +110,8 @@ CorrectedInverse corrected_inverse(double k_measured, const TubeDiameters& diame
   const double k_tube = tube_stiffness(k_measured, instrument);
   std::array<double, correction_groups> z{};
   const double bending_length = std::sqrt(h * diameters.d0 / 2);
-  if (k_tube > correction_max_stiffness ||  // stiffer than any fitted tube (in_training_envelope)
-      instrument.probe_radius_m > correction_max_probe_over_bending_length * bending_length ||
+  if (k_tube > correction.max_stiffness ||  // stiffer than any fitted tube
+      instrument.probe_radius_m > correction.max_probe_over_bending_length * bending_length ||
       !scaled(correction_log_groups(k_tube, diameters, h, instrument.probe_radius_m, correction), correction, z)) {
     result.status = SampleStatus::outside_correction;
     result.p = result.E = nan;
@@ -247,6 +248,8 @@ Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOp
     correction.pressure_ratio[t] = ratio_coefficients(static_cast<Eigen::Index>(t));
   }
   correction.training_points = static_cast<int>(rows);
+  correction.max_stiffness = correction_max_stiffness;
+  correction.max_probe_over_bending_length = correction_max_probe_over_bending_length;
   return correction;
 }
 

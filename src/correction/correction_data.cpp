@@ -6,6 +6,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "correction/correction_training.hpp"
 #include "growthuq/correction/corrected_closed_form.hpp"
 #include "growthuq/io/csv.hpp"
 
@@ -82,6 +83,8 @@ std::string correction_source(const Correction& c) {
   text += "c.poisson_ratio = " + number(c.poisson_ratio) + ";\n";
   text += "c.low = " + list(c.low) + ";\n";
   text += "c.high = " + list(c.high) + ";\n";
+  text += "c.max_stiffness = " + number(c.max_stiffness) + ";\n";
+  text += "c.max_probe_over_bending_length = " + number(c.max_probe_over_bending_length) + ";\n";
   text += "c.modulus = " + list(c.modulus) + ";\n";
   text += "c.pressure_ratio = " + list(c.pressure_ratio) + ";\n";
   text += "c.training_points = " + std::to_string(c.training_points) + ";\n";

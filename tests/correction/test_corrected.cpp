@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "correction/correction_training.hpp"
 #include "growthuq/correction/corrected_closed_form.hpp"
 #include "growthuq/fe/indentation.hpp"
 
