@@ -120,8 +120,10 @@ TEST_CASE("coverage of k's stated uncertainty and the contact's tolerance over 1
         contact_within += std::abs(result.contact_position_m - truth.contact) <= contact_tolerance ? 1 : 0;
       }
       const double rate = static_cast<double>(covered) / seeds;
-      INFO("window " << (convention == WindowConvention::relative ? "relative" : "absolute") << ", contact "
-                     << (method == ContactMethod::deviation ? "deviation" : "piecewise") << ": coverage " << rate);
+      MESSAGE("window " << (convention == WindowConvention::relative ? "relative" : "absolute") << ", contact "
+                        << (method == ContactMethod::deviation ? "deviation" : "piecewise") << ": coverage of +-1.96 u_stat "
+                        << rate << ", of +-1.96 u " << static_cast<double>(covered_total) / seeds << ", contact within "
+                        << contact_tolerance * 1e9 << " nm " << contact_within << "/" << seeds);
       CHECK(rate >= 0.93);
       CHECK(rate <= 0.97);
       CHECK(covered_total >= covered);
@@ -150,6 +152,7 @@ TEST_CASE("per tube: the mean of repeated curves and its uncertainty cover the t
     REQUIRE(tube[0].ok == 5);
     covered += std::abs(tube[0].stiffness - truth.stiffness) <= 1.96 * tube[0].uncertainty ? 1 : 0;
   }
+  MESSAGE("tubes: coverage of +-1.96 u_tube " << static_cast<double>(covered) / tubes);
   CHECK(static_cast<double>(covered) / tubes >= 0.95);
 }
 
