@@ -79,13 +79,13 @@ CurvesOptions parse(const Arguments& arguments, bool& run) {
        "contact threshold, in noise standard deviations of the baseline")
       ("smooth", po::value(&processing.smoothing_window)->default_value(0),
        "Savitzky-Golay window (quadratic, odd >= 5) applied after the baseline; 0: none")
-      ("min-r2", po::value(&processing.minimum_r_squared)->default_value(processing.minimum_r_squared),
+      ("min-r2", po::value(&processing.minimum_r_squared)->default_value(processing.minimum_r_squared, "0.95"),
        "least R^2 of the window fit (below: poor_linearity)")
       ("min-window-samples", po::value(&minimum_samples)->default_value(minimum_samples),
        "least samples in the window (below: window_not_reached)")
       ("jump-sigma", po::value(&processing.jump_sigma)->default_value(processing.jump_sigma),
        "a force drop larger than this many noise sd is a slip, snap-in or non-monotonic curve")
-      ("edge-step-uN", po::value(&edge_step_uN)->default_value(edge_step_uN),
+      ("edge-step-uN", po::value(&edge_step_uN)->default_value(edge_step_uN, "0.1"),
        "the window edges' shift for k's window sensitivity (uN)")
       ("force", "overwrite existing outputs")
       ("quiet", po::bool_switch(&options.quiet), "no progress on standard error");

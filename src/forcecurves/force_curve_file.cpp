@@ -50,6 +50,13 @@ FoundColumn one_of(const CsvTable& table, const UnitColumn (&columns)[N], std::s
   return *found;
 }
 
+// A column that may be absent: its index, or `absent`. (A sentinel rather than
+// std::optional<std::size_t>, which GCC 12 warns about as maybe uninitialized when inlined.)
+constexpr std::size_t absent = static_cast<std::size_t>(-1);
+std::size_t optional_column(const CsvTable& table, std::string_view name) {
+  return table.has_column(name) ? table.column_index(name) : absent;
+}
+
 struct SheetRow {
   std::string tube;
   int repetition = 0;
@@ -66,8 +73,7 @@ std::map<std::string, SheetRow, std::less<>> read_sheet(const std::string& path)
   const std::size_t repetition = table.column_index("repetition");
   const std::size_t rho = table.column_index("rho_um");
   const std::size_t k_sys = table.column_index("k_sys_N_per_m");
-  const std::optional<std::size_t> gain =
-      table.has_column("gain_uN_per_V") ? std::optional(table.column_index("gain_uN_per_V")) : std::nullopt;
+  const std::size_t gain = optional_column(table, "gain_uN_per_V");
   std::map<std::string, SheetRow, std::less<>> sheet;
   std::map<std::pair<std::string, int>, std::string> tube_repetitions;
   for (std::size_t row = 0; row < table.rows.size(); ++row) {
@@ -87,9 +93,9 @@ std::map<std::string, SheetRow, std::less<>> read_sheet(const std::string& path)
                                                    : stiffness.value_or(std::numeric_limits<double>::quiet_NaN());
     check_instrument_value(InstrumentField::sensor_stiffness, entry.sensor_stiffness, location, "k_sys_N_per_m",
                            cells[k_sys]);
-    if (gain && !cells[*gain].empty()) {
-      const double value = parse_double(cells[*gain], location, "gain_uN_per_V");
-      if (!(value > 0.0)) throw_bad_value(location, "gain_uN_per_V", cells[*gain], "a positive gain (uN per V)");
+    if (gain != absent && !cells[gain].empty()) {
+      const double value = parse_double(cells[gain], location, "gain_uN_per_V");
+      if (!(value > 0.0)) throw_bad_value(location, "gain_uN_per_V", cells[gain], "a positive gain (uN per V)");
       entry.gain_N_per_V = value * unit_factor::uN;
     }
     auto [repeated, first] = tube_repetitions.try_emplace({entry.tube, entry.repetition}, location);
@@ -125,15 +131,14 @@ void read_curve_file(const std::string& path, const std::string& stem, std::vect
   const CsvTable table = read_csv(path);
   const FoundColumn position = one_of(table, position_columns, "position");
   const FoundColumn force = one_of(table, force_columns, "force (or sensor voltage)");
-  const std::optional<std::size_t> name = table.has_column("curve") ? std::optional(table.column_index("curve")) : std::nullopt;
-  const std::optional<std::size_t> time = table.has_column("t_s") ? std::optional(table.column_index("t_s")) : std::nullopt;
-  const std::optional<std::size_t> segment =
-      table.has_column("segment") ? std::optional(table.column_index("segment")) : std::nullopt;
+  const std::size_t name = optional_column(table, "curve");
+  const std::size_t time = optional_column(table, "t_s");
+  const std::size_t segment = optional_column(table, "segment");
   std::set<std::size_t> of_this_file;
   for (std::size_t row = 0; row < table.rows.size(); ++row) {
     const auto& cells = table.rows[row];
     const std::string location = table.row_location(row);
-    const std::string curve_name = name ? cells[*name] : stem;
+    const std::string curve_name = name != absent ? cells[name] : stem;
     if (curve_name.empty()) throw_bad_value(location, "curve", curve_name, "a curve name");
     auto [it, inserted] = index.try_emplace(curve_name, curves.size());
     if (inserted) {
@@ -145,7 +150,7 @@ void read_curve_file(const std::string& path, const std::string& stem, std::vect
       partial.position_column = position.name;
       partial.force_column = force.name;
       partial.voltage = force.name == "V_V";
-      partial.segmented = segment.has_value();
+      partial.segmented = segment != absent;
     } else if (!of_this_file.contains(it->second)) {
       throw_bad_value(location, "curve", curve_name, "a curve of one file (it is also in " + curves[it->second].path + ")");
     }
@@ -160,16 +165,16 @@ void read_curve_file(const std::string& path, const std::string& stem, std::vect
     }
     partial.previous_text = cells[position.index];
     const double f = parse_double(cells[force.index], location, "column " + force.name) * force.to_si;
-    if (time) {
-      const double t = parse_double(cells[*time], location, "column t_s");
+    if (time != absent) {
+      const double t = parse_double(cells[time], location, "column t_s");
       if (!curve.time.empty() && !(t > curve.time.back())) {
-        throw_bad_value(location, "column t_s", cells[*time],
+        throw_bad_value(location, "column t_s", cells[time],
                         "a time after the previous sample of curve '" + curve_name + "' (" + format_double(curve.time.back()) + " s)");
       }
       curve.time.push_back(t);
     }
-    if (segment) {
-      const std::string& text = cells[*segment];
+    if (segment != absent) {
+      const std::string& text = cells[segment];
       if (text != "approach" && text != "retract") throw_bad_value(location, "column segment", text, "approach or retract");
       if (text == "approach" && partial.retracting) {
         throw_bad_value(location, "column segment", text,

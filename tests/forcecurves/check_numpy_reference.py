@@ -32,9 +32,9 @@ def draw_curves():
         k_sys = 100.0
         k_m = k * k_sys / (k + k_sys)
         for r in range(1, repetitions + 1):
-            contact = rng.uniform(1.2, 1.8)
+            contact = rng.uniform(1.6, 2.2)
             z = np.linspace(0.0, 5.0 + 0.2 * r, samples)
-            force = k_m * np.maximum(0.0, z - contact) + rng.uniform(-0.5, 0.5) + rng.uniform(-0.05, 0.05) * z \
+            force = k_m * np.maximum(0.0, z - contact) + rng.uniform(-0.5, 0.5) + rng.uniform(-0.005, 0.005) * z \
                 + 0.01 * rng.standard_normal(samples)
             retract_z = z[::-1][1:200]
             retract_f = force[::-1][1:200] - 0.3

@@ -185,15 +185,21 @@ TEST_CASE("each failure gets its status") {
   REQUIRE(process_force_curve(good, defaults).status == CurveStatus::ok);
   const std::size_t contact = static_cast<std::size_t>(std::round((truth.contact - truth.start) / sample_spacing(truth)));
 
+  // The good curve under options it cannot satisfy.
+  const auto rated_with = [&](auto change) {
+    CurveProcessingOptions options;
+    change(options);
+    return process_force_curve(good, options).status;
+  };
+  SUBCASE("options the curve cannot satisfy: a window above its maximum, an exacting R^2, a baseline past contact") {
+    CHECK(rated_with([](auto& o) { o.window = {WindowConvention::absolute, 0.4e-6, 20e-6}; }) == CurveStatus::window_not_reached);
+    CHECK(rated_with([](auto& o) { o.minimum_r_squared = 0.9999999; }) == CurveStatus::poor_linearity);
+    CHECK(rated_with([](auto& o) { o.baseline_fraction = 0.5; }) == CurveStatus::no_baseline);
+  }
   SUBCASE("no contact: the probe turns back before touching") {
     IndentationTruth short_of = truth;
     short_of.contact = truth.end - 2.0 * sample_spacing(truth);
     CHECK(process_force_curve(simulate_indentation_curve(short_of, 7, "c", "t", 1), defaults).status == CurveStatus::no_contact);
-  }
-  SUBCASE("window not reached: an absolute window above the curve's maximum") {
-    CurveProcessingOptions options;
-    options.window = {WindowConvention::absolute, 0.4e-6, 20e-6};
-    CHECK(process_force_curve(good, options).status == CurveStatus::window_not_reached);
   }
   SUBCASE("saturated: the reading clipped") {
     ForceCurve clipped = good;
@@ -218,20 +224,10 @@ TEST_CASE("each failure gets its status") {
     }
     CHECK(process_force_curve(sinking, defaults).status == CurveStatus::non_monotonic);
   }
-  SUBCASE("poor linearity: R^2 below an exacting minimum") {
-    CurveProcessingOptions options;
-    options.minimum_r_squared = 0.9999999;
-    CHECK(process_force_curve(good, options).status == CurveStatus::poor_linearity);
-  }
   SUBCASE("sensor limited: the slope above the sheet's k_sys") {
     ForceCurve stiff_tube = good;
     stiff_tube.sensor_stiffness_N_per_m = 1.0;
     CHECK(process_force_curve(stiff_tube, defaults).status == CurveStatus::sensor_limited);
-  }
-  SUBCASE("no baseline: the contact inside the baseline region") {
-    CurveProcessingOptions options;
-    options.baseline_fraction = 0.5;
-    CHECK(process_force_curve(good, options).status == CurveStatus::no_baseline);
   }
 }
 
