@@ -308,7 +308,9 @@ std::vector<SynthFile> synthesize_line(const LineDistributions& truth, const Syn
     for (const TableColumn* column : present) {
       text += truth_comment(*truth.find(column->variable));
       columns += "," + column_name(column->variable, unit_named(column->unit));
-      raw_ini += raw_ini_section(table, *column);
+      // With force curves, k comes from them (the [force_curves] section below), not the column.
+      const bool from_curves = settings.force_curve_repetitions > 0 && std::string_view(column->variable) == "k";
+      if (!from_curves) raw_ini += raw_ini_section(table, *column);
     }
     text += columns + "\n";
     Draws draws(truth, derive_key(line_key, table.file));
@@ -332,6 +334,8 @@ std::vector<SynthFile> synthesize_line(const LineDistributions& truth, const Syn
     files.push_back({"force_curves.csv", std::move(curves.curves)});
     files.push_back({"force_curves_sheet.csv", std::move(curves.sheet)});
     files.push_back({"force_curves_truth.csv", std::move(curves.truth)});
+    raw_ini += "\n# k per tube from its raw force curves (src/forcecurves/README.md), then its distribution\n"
+               "[force_curves]\ncurves = force_curves.csv\nsheet = force_curves_sheet.csv\n";
   }
 
   if (truth.find("tau") != nullptr || truth.find("einf") != nullptr) {

@@ -2,6 +2,7 @@
 // them, and processed back to every tube's true k within the stated uncertainty.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -12,6 +13,8 @@
 #include "growthuq/forcecurves/force_curve.hpp"
 #include "growthuq/forcecurves/tube_stiffness.hpp"
 #include "growthuq/io/csv.hpp"
+#include "growthuq/rawdata/raw_line_file.hpp"
+#include "growthuq/rawdata/raw_line_fit.hpp"
 #include "growthuq/synthetic/synthetic_line.hpp"
 #include "support/scratch_directory.hpp"
 
@@ -32,9 +35,7 @@ TEST_CASE("synth's force curves read back and give each tube's true k within its
   CHECK(files.at("force_curves.csv").rfind("# SYNTHETIC DATA, not measurements", 0) == 0);
 
   testing::ScratchDirectory scratch("synth_force_curves");
-  for (const char* name : {"force_curves.csv", "force_curves_sheet.csv", "force_curves_truth.csv"}) {
-    std::ofstream(scratch.root / name) << files.at(name);
-  }
+  for (const auto& [name, text] : files) std::ofstream(scratch.root / name) << text;
   const std::vector<ForceCurve> curves =
       read_force_curves((scratch.root / "force_curves.csv").string(), (scratch.root / "force_curves_sheet.csv").string());
   REQUIRE(curves.size() == 60);
@@ -54,4 +55,14 @@ TEST_CASE("synth's force curves read back and give each tube's true k within its
     REQUIRE(tube.ok == 3);
     CHECK(std::abs(tube.stiffness - truth_of_tube.at(tube.tube)) <= 4.0 * tube.uncertainty);
   }
+
+  // raw.ini takes k from the curves: the raw line's k values are the tubes' k.
+  const RawLineFile raw = read_raw_line_file((scratch.root / "raw.ini").string());
+  REQUIRE(raw.has_force_curves);
+  for (const RawMeasurement& measurement : raw.measurements) CHECK(measurement.variable != "k");
+  const RawLineFit fit = fit_raw_line(raw, RawFitSettings{});
+  const auto k = std::find_if(fit.variables.begin(), fit.variables.end(), [](const VariableFit& v) { return v.variable == "k"; });
+  REQUIRE(k != fit.variables.end());
+  REQUIRE(k->values.size() == tubes.size());
+  for (std::size_t t = 0; t < tubes.size(); ++t) CHECK(k->values[t] == tubes[t].stiffness);
 }

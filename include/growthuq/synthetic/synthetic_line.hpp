@@ -17,7 +17,8 @@
 //                      indented tube, that many per tube, drawn from the tube's true k (before
 //                      rounding) by synthetic/indentation_curve.hpp, the contact uniform in
 //                      [1.2, 1.8] um, the stage turning back at 6 uN; their sheet; and each
-//                      curve's true k and contact (which no lab has). `growthuq curves` reads them.
+//                      curve's true k and contact (which no lab has). `growthuq curves` reads them,
+//                      and raw.ini then takes k from them ([force_curves]) instead of indentation.csv.
 //   raw.ini            the raw line file naming all of the above
 // Values are independent draws from the true marginals (no correlation between quantities:
 // they come from different tubes; a campaign imposes its rank correlation), rounded to the
