@@ -170,8 +170,8 @@ void report(const CurvesOptions& options, const std::vector<CurveResult>& result
   const FitWindow& window = options.processing.window;
   const bool relative = window.convention == WindowConvention::relative;
   out << "growthuq curves: " << results.size() << " curve(s) of " << tubes.size() << " tube(s) from " << options.curves
-      << "; window " << (relative ? "[F_max - " : "[") << format_double(to_uN(window.low_N))
-      << (relative ? " uN, F_max - " : " uN, ") << format_double(to_uN(window.high_N)) << " uN], contact "
+      << "; window " << (relative ? "[F_max - " : "[") << rounded(to_uN(window.low_N), 9)
+      << (relative ? " uN, F_max - " : " uN, ") << rounded(to_uN(window.high_N), 9) << " uN], contact "
       << (options.processing.contact == ContactMethod::deviation ? "deviation" : "piecewise") << "\n";
   std::map<std::string, std::size_t> counts;
   for (const CurveResult& r : results) ++counts[std::string(to_string(r.status))];
