@@ -15,6 +15,7 @@
 #include "growthuq/forcecurves/curve_processing.hpp"
 #include "growthuq/forcecurves/force_curve.hpp"
 #include "growthuq/forcecurves/tube_stiffness.hpp"
+#include "growthuq/forcecurves/window_text.hpp"
 #include "growthuq/io/csv.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "options.hpp"
@@ -35,17 +36,6 @@ struct CurvesOptions {
   Overwrite overwrite = Overwrite::refuse;
   bool quiet = false;
 };
-
-// "a,b" in uN as two forces in N.
-std::pair<double, double> force_pair(const std::string& text) {
-  const std::size_t comma = text.find(',');
-  const std::string expected = "two forces in uN separated by a comma (4,0.5)";
-  if (comma == std::string::npos) throw_bad_value(command, "--window-uN", text, expected);
-  const std::optional<double> first = try_parse_double(text.substr(0, comma));
-  const std::optional<double> second = try_parse_double(text.substr(comma + 1));
-  if (!first || !second) throw_bad_value(command, "--window-uN", text, expected);
-  return {from_uN(*first), from_uN(*second)};
-}
 
 CurvesOptions parse(const Arguments& arguments, bool& run) {
   CurvesOptions options;
@@ -107,10 +97,9 @@ CurvesOptions parse(const Arguments& arguments, bool& run) {
   if (contact != "deviation" && contact != "piecewise") throw_bad_value(command, "--contact", contact, "deviation or piecewise");
   processing.contact = contact == "deviation" ? ContactMethod::deviation : ContactMethod::piecewise;
   if (window != "relative" && window != "absolute") throw_bad_value(command, "--window", window, "relative or absolute");
-  processing.window.convention = window == "relative" ? WindowConvention::relative : WindowConvention::absolute;
-  const auto [low, high] = force_pair(window_uN.empty() ? (window == "relative" ? "4,0.5" : "0.4,4") : window_uN);
-  processing.window.low_N = low;
-  processing.window.high_N = high;
+  processing.window = window_of(window == "relative" ? WindowConvention::relative : WindowConvention::absolute,
+                                window_uN.empty() ? (window == "relative" ? "4,0.5" : "0.4,4") : window_uN, command,
+                                "--window-uN");
   if (baseline != "tilt" && baseline != "offset") throw_bad_value(command, "--baseline", baseline, "tilt or offset");
   processing.baseline_tilt = baseline == "tilt";
   if (minimum_samples < 3) throw_bad_value(command, "--min-window-samples", std::to_string(minimum_samples), "at least 3");

@@ -5,13 +5,11 @@
 #include <algorithm>
 #include <array>
 #include <filesystem>
-#include <optional>
-#include <tuple>
 #include <utility>
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
-#include "growthuq/core/units.hpp"
+#include "growthuq/forcecurves/window_text.hpp"
 #include "io/ini.hpp"
 #include "io/ini_checks.hpp"
 
@@ -118,17 +116,6 @@ RawRelaxation read_relaxation(const IniDocument& document, const IniSection& sec
   return relaxation;
 }
 
-// "a,b" in uN (window_uN) as two forces in N.
-std::pair<double, double> force_pair(const IniDocument& document, const IniEntry& entry) {
-  const std::size_t comma = entry.value.find(',');
-  const auto first = try_parse_double(entry.value.substr(0, comma));
-  const auto second = comma == std::string::npos ? std::nullopt : try_parse_double(entry.value.substr(comma + 1));
-  if (!first || !second) {
-    throw_bad_value(document.location(entry.line), entry.key, entry.value, "two forces in uN separated by a comma (4,0.5)");
-  }
-  return {*first * unit_factor::uN, *second * unit_factor::uN};
-}
-
 RawForceCurves read_force_curves_section(const IniDocument& document, const IniSection& section) {
   RawForceCurves force_curves;
   force_curves.line = section.line;
@@ -138,17 +125,17 @@ RawForceCurves read_force_curves_section(const IniDocument& document, const IniS
   force_curves.sheet = existing_file(
       document, required_entry(document, section, "sheet", "sheet = <CSV curve,tube,repetition,rho_um,k_sys_N_per_m>"));
   CurveProcessingOptions& options = force_curves.options;
-  std::string window_default = "4,0.5";
+  WindowConvention convention = WindowConvention::relative;
   if (const IniEntry* window = section.find("window")) {
     if (window->value != "relative" && window->value != "absolute") {
       throw_bad_value(document.location(window->line), "window", window->value, "relative or absolute");
     }
-    options.window.convention = window->value == "relative" ? WindowConvention::relative : WindowConvention::absolute;
-    if (window->value == "absolute") window_default = "0.4,4";
+    if (window->value == "absolute") convention = WindowConvention::absolute;
   }
-  const IniEntry defaults{"window_uN", window_default, section.line};
   const IniEntry* forces = section.find("window_uN");
-  std::tie(options.window.low_N, options.window.high_N) = force_pair(document, forces ? *forces : defaults);
+  const std::string defaults = convention == WindowConvention::relative ? "4,0.5" : "0.4,4";
+  options.window = window_of(convention, forces ? forces->value : defaults,
+                             document.location(forces ? forces->line : section.line), "window_uN");
   if (const IniEntry* contact = section.find("contact")) {
     if (contact->value != "deviation" && contact->value != "piecewise") {
       throw_bad_value(document.location(contact->line), "contact", contact->value, "deviation or piecewise");
