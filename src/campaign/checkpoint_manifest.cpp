@@ -120,6 +120,10 @@ CheckpointManifest make_checkpoint_manifest(const Campaign& campaign, const Camp
         add(raw.relaxation.curves);
         if (!raw.relaxation.meta.empty()) add(raw.relaxation.meta);
       }
+      if (raw.has_force_curves) {
+        add(raw.force_curves.curves);
+        add(raw.force_curves.sheet);
+      }
     } else {
       add(line.distributions_path);
     }

@@ -99,6 +99,7 @@ PreparedCampaign::PreparedCampaign(Campaign campaign, Pool* pool, ProgressMode p
     const CurveFitter fit_curves = pool != nullptr ? shared_curve_fitter(*pool, campaign_line.name, progress, *log) : CurveFitter();
     line.distributions = load_line_distributions(campaign_line, campaign_.instrument, line.raw_fit, fit_curves);
     require_sensor_stiffer_than_line(line.distributions, campaign_.instrument, file_location(campaign_.path, campaign_line.line));
+    if (line.raw_fit) require_force_curves_match(*line.raw_fit, campaign_, fidelity, file_location(campaign_.path, campaign_line.line));
     const std::vector<std::string> inputs = variable_names(line.distributions);
     try {
       line.plan = plan_evaluation(available, inputs, campaign_.outputs);

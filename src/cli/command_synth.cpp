@@ -44,6 +44,10 @@ struct SynthOptions {
   double ramp_um_per_s = 100.0;
   double set_point_uN = 5.0;
   double noise_pct = 0.2;
+  std::string force_curves = "0";
+  std::string k_sys = "100";
+  double curve_noise_uN = 0.01;
+  std::string curve_samples = "1000";
   bool force = false;
 };
 
@@ -77,6 +81,15 @@ SynthSettings settings_of(const SynthOptions& options) {
     throw_bad_value(location, "--force-noise-pct", format_double(options.noise_pct), "a percentage in [0, 100)");
   }
   settings.force_noise = from_pct(options.noise_pct);
+  settings.force_curve_repetitions = parse_count(options.force_curves, location, "--force-curves", 0, 100);
+  settings.force_curve.sensor_stiffness =
+      parse_instrument(instrument_flags(location, options.rho_um, options.nu, options.k_sys), ProbeRadius::required)
+          .sensor_stiffness_N_per_m;
+  if (!(options.curve_noise_uN >= 0.0) || !std::isfinite(options.curve_noise_uN)) {
+    throw_bad_value(location, "--curve-noise-uN", format_double(options.curve_noise_uN), "a force sd >= 0 (uN)");
+  }
+  settings.force_curve.noise = from_uN(options.curve_noise_uN);
+  settings.force_curve.approach_samples = parse_count(options.curve_samples, location, "--curve-samples", 100, 100000);
   // The curves are held in memory and read back by relax and fit-line (256 MiB per file): their
   // hold phases are bounded, in samples per line, instead of growing memory without limit.
   const double hold_samples = options.hold_s * options.sample_hz * static_cast<double>(settings.curves.high);
@@ -100,7 +113,10 @@ std::string regenerate_command(const SynthOptions& options, const SynthSettings&
              format_double(settings.instrument.poisson_ratio) + " --hold-s " +
              format_double(options.hold_s) + " --sample-hz " + format_double(options.sample_hz) + " --ramp-um-per-s " +
              format_double(options.ramp_um_per_s) + " --set-point-uN " + format_double(options.set_point_uN) +
-             " --force-noise-pct " + format_double(options.noise_pct) + " --out " + options.out;
+             " --force-noise-pct " + format_double(options.noise_pct) + " --force-curves " +
+             std::to_string(settings.force_curve_repetitions) + " --k-sys " + options.k_sys + " --curve-noise-uN " +
+             format_double(options.curve_noise_uN) + " --curve-samples " + std::to_string(settings.force_curve.approach_samples) +
+             " --out " + options.out;
   return command;
 }
 
@@ -122,6 +138,14 @@ int run_synth(const Arguments& arguments) {
       ("ramp-um-per-s", po::value(&options.ramp_um_per_s)->default_value(options.ramp_um_per_s, "100"), "indentation speed of the ramp (um/s)")
       ("set-point-uN", po::value(&options.set_point_uN)->default_value(options.set_point_uN, "5"), "force that ends the ramp (uN)")
       ("force-noise-pct", po::value(&options.noise_pct)->default_value(options.noise_pct, "0.2"), "force noise, standard deviation in % of the set point")
+      ("force-curves", po::value(&options.force_curves)->default_value(options.force_curves),
+       "raw force-indentation curves per indented tube (0: none): force_curves.csv, its sheet and its truth")
+      ("k-sys", po::value(&options.k_sys)->default_value(options.k_sys), "sensor stiffness in series of the force curves "
+                                                                          "(N/m, inf for none)")
+      ("curve-noise-uN", po::value(&options.curve_noise_uN)->default_value(options.curve_noise_uN, "0.01"),
+       "force noise of the force curves, standard deviation (uN)")
+      ("curve-samples", po::value(&options.curve_samples)->default_value(options.curve_samples),
+       "approach samples of a force curve (the retract has as many)")
       ("force", po::bool_switch(&options.force), "replace existing files");
   po::positional_options_description positional;
   positional.add("line", -1);
@@ -139,7 +163,10 @@ int run_synth(const Arguments& arguments) {
           "relax to its einf above the membrane limit), the line's median h, tau_slow and einf drawn from the\n"
           "truth and an illustrative fast phase (tau_fast ~0.25 s), with Gaussian force noise. Every file starts\n"
           "with '#' lines marking it SYNTHETIC, naming the truth and the command that regenerates it (the same\n"
-          "seed gives the same files).",
+          "seed gives the same files).\n\n"
+          "With --force-curves N, also N raw force-indentation curves per indented tube from its true k\n"
+          "(force_curves.csv, force_curves_sheet.csv for growthuq curves, and force_curves_truth.csv): a linear\n"
+          "force above a drawn contact point, the sensor in series, a baseline offset and drift, Gaussian noise.",
           described, positional, values)) {
     return 0;
   }

@@ -23,6 +23,7 @@ int run_fit(const Arguments& arguments);
 int run_eval(const Arguments& arguments);
 int run_correlate(const Arguments& arguments);
 int run_relax(const Arguments& arguments);
+int run_curves(const Arguments& arguments);
 int run_run(const Arguments& arguments);
 int run_check(const Arguments& arguments);
 int run_tradeoff(const Arguments& arguments);

@@ -28,6 +28,7 @@ constexpr std::array commands{
     Command{"eval", "invert measured tubes to turgor, modulus and more (no Monte Carlo)", growthuq::cli::run_eval},
     Command{"correlate", "rank correlation of (k, h, d, d0) from the forward mechanics", growthuq::cli::run_correlate},
     Command{"relax", "fit generalized Maxwell series to force-relaxation curves", growthuq::cli::run_relax},
+    Command{"curves", "stiffness k per curve and per tube from raw force-indentation curves", growthuq::cli::run_curves},
     Command{"run", "run a campaign: plant lines through the models, summaries and result files", growthuq::cli::run_run},
     Command{"check", "validate a campaign as run does and print its plan, without running it", growthuq::cli::run_check},
     Command{"tradeoff", "measured speed/accuracy trade of a campaign over sample counts", growthuq::cli::run_tradeoff},

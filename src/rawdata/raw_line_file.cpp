@@ -9,6 +9,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
+#include "growthuq/forcecurves/window_text.hpp"
 #include "io/ini.hpp"
 #include "io/ini_checks.hpp"
 
@@ -115,6 +116,39 @@ RawRelaxation read_relaxation(const IniDocument& document, const IniSection& sec
   return relaxation;
 }
 
+RawForceCurves read_force_curves_section(const IniDocument& document, const IniSection& section) {
+  RawForceCurves force_curves;
+  force_curves.line = section.line;
+  reject_unknown_keys(document, section, {"curves", "sheet", "window", "window_uN", "contact", "families"});
+  force_curves.curves = existing_file(
+      document, required_entry(document, section, "curves", "curves = <CSV curve,z_um,F_uN (distributions/README.md)>"));
+  force_curves.sheet = existing_file(
+      document, required_entry(document, section, "sheet", "sheet = <CSV curve,tube,repetition,rho_um,k_sys_N_per_m>"));
+  CurveProcessingOptions& options = force_curves.options;
+  WindowConvention convention = WindowConvention::relative;
+  if (const IniEntry* window = section.find("window")) {
+    if (window->value != "relative" && window->value != "absolute") {
+      throw_bad_value(document.location(window->line), "window", window->value, "relative or absolute");
+    }
+    if (window->value == "absolute") convention = WindowConvention::absolute;
+  }
+  const IniEntry* forces = section.find("window_uN");
+  const std::string defaults = convention == WindowConvention::relative ? "4,0.5" : "0.4,4";
+  options.window = window_of(convention, forces ? forces->value : defaults,
+                             document.location(forces ? forces->line : section.line), "window_uN");
+  if (const IniEntry* contact = section.find("contact")) {
+    if (contact->value != "deviation" && contact->value != "piecewise") {
+      throw_bad_value(document.location(contact->line), "contact", contact->value, "deviation or piecewise");
+    }
+    options.contact = contact->value == "deviation" ? ContactMethod::deviation : ContactMethod::piecewise;
+  }
+  if (const std::string reason = options.invalid_reason(); !reason.empty()) {
+    throw InputError(document.location(forces ? forces->line : section.line), "[force_curves]: " + reason);
+  }
+  force_curves.families = families_of(document, section, false);
+  return force_curves;
+}
+
 }  // namespace
 
 std::vector<std::string> RawLineFile::variables() const {
@@ -124,6 +158,7 @@ std::vector<std::string> RawLineFile::variables() const {
     names.emplace_back("tau");
     names.emplace_back("einf");
   }
+  if (has_force_curves) names.emplace_back("k");
   return names;
 }
 
@@ -146,9 +181,13 @@ RawLineFile read_raw_line_file(const std::string& path) {
     } else if (section.name == "relaxation") {
       raw.relaxation = read_relaxation(document, section);
       raw.has_relaxation = true;
+    } else if (section.name == "force_curves") {
+      raw.force_curves = read_force_curves_section(document, section);
+      raw.has_force_curves = true;
     } else {
-      throw InputError(document.location(section.line),
-                       "unknown section [" + section.name + "]: expected [line], [measurement VARIABLE] or [relaxation]");
+      throw InputError(document.location(section.line), "unknown section [" + section.name +
+                                                             "]: expected [line], [measurement VARIABLE], [relaxation] "
+                                                             "or [force_curves]");
     }
   }
   detail::LineHeader header = detail::read_line_header(document);
@@ -164,8 +203,17 @@ RawLineFile read_raw_line_file(const std::string& path) {
       }
     }
   }
-  if (raw.measurements.empty() && !raw.has_relaxation) {
-    throw InputError(path, "no [measurement VARIABLE] or [relaxation] section: nothing to fit");
+  if (raw.has_force_curves) {
+    for (const RawMeasurement& measurement : raw.measurements) {
+      if (measurement.variable == "k") {
+        throw InputError(document.location(measurement.line),
+                         "[measurement k] and [force_curves] (line " + std::to_string(raw.force_curves.line) +
+                             ") both give k: expected one source per variable");
+      }
+    }
+  }
+  if (raw.measurements.empty() && !raw.has_relaxation && !raw.has_force_curves) {
+    throw InputError(path, "no [measurement VARIABLE], [relaxation] or [force_curves] section: nothing to fit");
   }
   return raw;
 }

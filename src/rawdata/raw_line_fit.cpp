@@ -10,6 +10,8 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/distributions/sampled_range.hpp"
+#include "growthuq/forcecurves/curve_processing.hpp"
+#include "growthuq/forcecurves/force_curve.hpp"
 #include "growthuq/io/csv.hpp"
 
 namespace growthuq {
@@ -223,6 +225,29 @@ RawLineFit fit_raw_line(const RawLineFile& raw, const RawFitSettings& settings) 
     result.variables.push_back(fit_variable_by_aic("einf", unit_named("frac"), std::move(einf), raw.relaxation.einf_families,
                                                    "E_inf/E_r(0) of " + source, location));
   }
+  if (raw.has_force_curves) {
+    // k per tube: the mean of its ok curves (Eq. (C10), src/forcecurves/README.md).
+    const RawForceCurves& source = raw.force_curves;
+    ForceCurveFits fits;
+    for (const ForceCurve& curve : read_force_curves(source.curves, source.sheet)) {
+      fits.curves.push_back(process_force_curve(curve, source.options));
+    }
+    fits.tubes = tube_stiffness(fits.curves);
+    std::vector<double> k;
+    for (const TubeStiffness& tube : fits.tubes) {
+      if (tube.ok > 0) k.push_back(tube.stiffness);
+    }
+    const std::string location = file_location(raw.path, source.line);
+    if (k.size() < 2) {
+      throw InputError(location, std::to_string(k.size()) + " of " + std::to_string(fits.tubes.size()) + " tubes of " +
+                                     source.curves + " have an ok curve: expected at least 2 to fit k (growthuq curves "
+                                     "names each curve's status and reason)");
+    }
+    const std::string described = "k per tube of " + source.curves + ", " + std::to_string(k.size()) + " of " +
+                                  std::to_string(fits.tubes.size()) + " tubes with an ok curve";
+    result.variables.push_back(fit_variable_by_aic("k", unit_named("N/m"), std::move(k), source.families, described, location));
+    result.force_curves = std::move(fits);
+  }
   result.distributions = line_distributions_of(raw, result.variables);
   return result;
 }
@@ -280,6 +305,23 @@ std::string format_raw_fit_report(const RawLineFit& fit) {
               ", " + format_number(widest->tau_slow_high) + "] s\n";
     } else if (ok > 0) {
       text += "    largest standard error of a fitted tau_slow: " + format_number(100.0 * worst_se, "%.2g") + " %\n";
+    }
+  }
+  if (fit.force_curves) {
+    const ForceCurveFits& force_curves = *fit.force_curves;
+    std::map<std::string, std::size_t> counts;
+    for (const CurveResult& curve : force_curves.curves) ++counts[std::string(to_string(curve.status))];
+    std::string rated;
+    for (const auto& [status, count] : counts) rated += (rated.empty() ? "" : ", ") + status + " " + std::to_string(count);
+    std::size_t with_k = 0;
+    for (const TubeStiffness& tube : force_curves.tubes) with_k += tube.ok > 0 ? 1 : 0;
+    text += "  force curves: " + std::to_string(force_curves.curves.size()) + " of " +
+            std::to_string(force_curves.tubes.size()) + " tubes (" + rated + "); k of " + std::to_string(with_k) +
+            " tubes, the mean of their ok curves\n";
+    for (const CurveResult& curve : force_curves.curves) {
+      if (curve.status != CurveStatus::ok) {
+        text += "    " + curve.curve + ": " + std::string(to_string(curve.status)) + ": " + curve.reason + "\n";
+      }
     }
   }
   return text;

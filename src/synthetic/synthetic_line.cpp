@@ -9,6 +9,7 @@
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
 #include "growthuq/distributions/standard_normal.hpp"
+#include "growthuq/forcecurves/force_curve.hpp"
 #include "growthuq/mechanics/thin_shell.hpp"
 #include "growthuq/relaxation/modulus.hpp"
 #include "growthuq/sampling/random_stream.hpp"
@@ -89,12 +90,16 @@ class Draws {
   // A value of `variable` written in `unit` at `resolution`, redrawn while it rounds to <= 0.
   double rounded(const LineVariable& variable, const Unit& unit, double resolution) {
     for (int attempt = 0; attempt < 1000; ++attempt) {
-      const double value = std::round(si(variable) / unit.to_si / resolution) * resolution;
+      last_unrounded_ = si(variable);
+      const double value = std::round(last_unrounded_ / unit.to_si / resolution) * resolution;
       if (value > 0.0) return value;
     }
     throw InputError(truth_.path, "[" + variable.name + "]: 1000 draws in a row round to <= 0 at the resolution " +
                                       format_double(resolution) + " " + std::string(unit.symbol));
   }
+
+  // The value (SI) behind the last rounded() one, before rounding: the tube's truth.
+  double last_unrounded() const { return last_unrounded_; }
 
   double uniform() { return stream_.uniform_open(); }
   double normal() { return standard_normal_quantile(stream_.uniform_open()); }
@@ -102,6 +107,7 @@ class Draws {
  private:
   const LineDistributions& truth_;
   RandomStream stream_;
+  double last_unrounded_ = 0.0;
 };
 
 const LineVariable& need(const LineDistributions& truth, std::string_view name, std::string_view why) {
@@ -223,6 +229,58 @@ RelaxationFiles relaxation_files(const LineDistributions& truth, const SynthSett
   return files;
 }
 
+// The force at which the stage turns back (N): above the relative window's 4 uN below the maximum
+// and the absolute window's 4 uN.
+constexpr double force_curve_set_point = 6e-6;
+
+struct ForceCurveFiles {
+  std::string curves;
+  std::string sheet;
+  std::string truth;
+};
+
+// Raw force curves of the indented tubes, force_curve_repetitions per tube, each from the tube's
+// true k with its own contact point and noise.
+ForceCurveFiles force_curve_files(const LineDistributions& truth, const SynthSettings& settings,
+                                  const std::vector<double>& stiffness, std::uint64_t line_key, const std::string& command) {
+  RandomStream contacts(derive_key(line_key, "force_curve_contacts"));
+  const std::uint64_t noise_key = derive_key(line_key, "force_curve_noise");
+  std::vector<ForceCurve> curves;
+  ForceCurveFiles files;
+  const IndentationTruth& shape = settings.force_curve;
+  const std::string common = header("raw force-indentation curves of the indented tubes of indentation.csv (" +
+                                        std::to_string(settings.force_curve_repetitions) + " per tube, to " +
+                                        format_double(to_uN(force_curve_set_point)) + " uN at " +
+                                        format_double(to_um_per_s(shape.speed)) + " um/s, k_sys " +
+                                        format_double(shape.sensor_stiffness) + " N/m, noise " +
+                                        format_double(to_uN(shape.noise)) + " uN)",
+                                    truth, command);
+  files.truth = common + "# THE TRUTH of every curve, which no lab has: the tube's k before rounding and the contact.\n"
+                         "curve,tube,k_N_per_m,contact_um\n";
+  for (std::size_t tube = 0; tube < stiffness.size(); ++tube) {
+    for (std::size_t r = 1; r <= settings.force_curve_repetitions; ++r) {
+      IndentationTruth curve_truth = shape;
+      curve_truth.stiffness = stiffness[tube];
+      curve_truth.probe_radius = settings.instrument.probe_radius_m;
+      // Contact 1.2-1.8 um into the travel; the stage turns back at the set force, as the
+      // instrument's protocol does, so every tube spans the fit window whatever its k.
+      curve_truth.contact = shape.start + from_um(1.2 + 0.6 * contacts.uniform_open());
+      curve_truth.end = curve_truth.contact + force_curve_set_point / measured_stiffness(curve_truth.stiffness, Instrument{
+                                                                          curve_truth.probe_radius, 0.2, shape.sensor_stiffness});
+      const std::string tube_name = two_digit_name("I", tube);
+      const std::string name = tube_name + "_r" + std::to_string(r);
+      curves.push_back(simulate_indentation_curve(curve_truth, counter_bits(noise_key, curves.size()), name, tube_name,
+                                                  static_cast<int>(r)));
+      files.truth += name + "," + tube_name + "," + format_double(curve_truth.stiffness) + "," +
+                     format_double(to_um(curve_truth.contact)) + "\n";
+    }
+  }
+  files.curves = common + "# Read with: growthuq curves force_curves.csv --sheet force_curves_sheet.csv --out K.csv\n" +
+                 force_curves_csv(curves);
+  files.sheet = common + curve_sheet_csv(curves);
+  return files;
+}
+
 }  // namespace
 
 std::vector<SynthFile> synthesize_line(const LineDistributions& truth, const SynthSettings& settings,
@@ -234,6 +292,7 @@ std::vector<SynthFile> synthesize_line(const LineDistributions& truth, const Syn
   const std::uint64_t line_key = derive_key(mix64(settings.seed), truth.name);
   const Counts counts = draw_counts(line_key, settings);
   std::vector<SynthFile> files;
+  std::vector<double> indented_stiffness;  // true k of indentation.csv's tubes, for the force curves
   std::string raw_ini = header("the raw line file naming this folder's tables and curves", truth, regenerate_command) +
                         "[line]\nname = " + truth.name + "\ndescription = SYNTHETIC raw data drawn from " + truth.path + "\n";
 
@@ -249,7 +308,9 @@ std::vector<SynthFile> synthesize_line(const LineDistributions& truth, const Syn
     for (const TableColumn* column : present) {
       text += truth_comment(*truth.find(column->variable));
       columns += "," + column_name(column->variable, unit_named(column->unit));
-      raw_ini += raw_ini_section(table, *column);
+      // With force curves, k comes from them (the [force_curves] section below), not the column.
+      const bool from_curves = settings.force_curve_repetitions > 0 && std::string_view(column->variable) == "k";
+      if (!from_curves) raw_ini += raw_ini_section(table, *column);
     }
     text += columns + "\n";
     Draws draws(truth, derive_key(line_key, table.file));
@@ -258,10 +319,23 @@ std::vector<SynthFile> synthesize_line(const LineDistributions& truth, const Syn
       for (const TableColumn* column : present) {
         const double value = draws.rounded(*truth.find(column->variable), unit_named(column->unit), column->resolution);
         text += "," + fixed(value, decimals_of(column->resolution));
+        if (std::string_view(table.file) == "indentation.csv" && std::string_view(column->variable) == "k") {
+          indented_stiffness.push_back(draws.last_unrounded());
+        }
       }
       text += "\n";
     }
     files.push_back({table.file, std::move(text)});
+  }
+
+  if (settings.force_curve_repetitions > 0) {
+    if (indented_stiffness.empty()) need(truth, "k", "raw force curves");
+    ForceCurveFiles curves = force_curve_files(truth, settings, indented_stiffness, line_key, regenerate_command);
+    files.push_back({"force_curves.csv", std::move(curves.curves)});
+    files.push_back({"force_curves_sheet.csv", std::move(curves.sheet)});
+    files.push_back({"force_curves_truth.csv", std::move(curves.truth)});
+    raw_ini += "\n# k per tube from its raw force curves (src/forcecurves/README.md), then its distribution\n"
+               "[force_curves]\ncurves = force_curves.csv\nsheet = force_curves_sheet.csv\n";
   }
 
   if (truth.find("tau") != nullptr || truth.find("einf") != nullptr) {

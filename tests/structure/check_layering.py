@@ -13,11 +13,13 @@ import tempfile
 # Lowest first. core: errors, units, numbers, buffers; evaluation: sample blocks, statuses, the
 # evaluator interface and the results of a line; stats: summaries and analyses of those results;
 # io: files (INI, CSV, results.h5); then the models' inputs (distributions, correlation,
-# sampling), the models (mechanics, fe, relaxation, growth), what is built from them (rawdata,
+# sampling), the models (mechanics, fe, correction, fidelity: the choice among them, relaxation,
+# forcecurves: stiffness from raw indentation curves, growth), what is built from them (rawdata,
 # synthetic), where evaluation runs (pool), the campaign, and the command line on top.
 CONCEPT_ORDER = [
     "core", "evaluation", "stats", "io", "distributions", "correlation", "sampling", "sensitivity",
-    "mechanics", "fe", "correction", "fidelity", "relaxation", "growth", "rawdata", "synthetic", "pool", "campaign", "cli",
+    "mechanics", "fe", "correction", "fidelity", "relaxation", "forcecurves", "growth", "rawdata", "synthetic", "pool",
+    "campaign", "cli",
 ]
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')

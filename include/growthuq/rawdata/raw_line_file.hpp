@@ -14,6 +14,11 @@
 //                               meta = CSV (curve,delta_um,p_MPa,d_um,h_nm[,rho_um]; optional when
 //                               the curves file has those columns), terms = 1|2|3 (2),
 //                               fit = step|ramp_aware (step), families = ... (optional)
+//   [force_curves]              optional; gives k per tube from raw force-indentation curves
+//                               (forcecurves/): curves = CSV (a long table with a curve column),
+//                               sheet = CSV (curve,tube,repetition,rho_um,k_sys_N_per_m),
+//                               window = relative|absolute (relative), window_uN = a,b (4,0.5 or
+//                               0.4,4), contact = deviation|piecewise (deviation), families = ...
 #pragma once
 
 #include <string>
@@ -21,6 +26,7 @@
 
 #include "growthuq/core/units.hpp"
 #include "growthuq/distributions/fit.hpp"
+#include "growthuq/forcecurves/curve_processing.hpp"
 
 namespace growthuq {
 
@@ -45,6 +51,16 @@ struct RawRelaxation {
   long line = 0;
 };
 
+// Raw force-indentation curves, processed curve by curve; each tube's mean k (of its ok curves)
+// is one value of k.
+struct RawForceCurves {
+  std::string curves;               // resolved like RawMeasurement::file
+  std::string sheet;
+  CurveProcessingOptions options;   // window and contact from the section, the rest the defaults
+  std::vector<FitFamily> families;
+  long line = 0;
+};
+
 struct RawLineFile {
   std::string path;  // as given
   std::string name;
@@ -52,8 +68,11 @@ struct RawLineFile {
   std::vector<RawMeasurement> measurements;  // in file order
   bool has_relaxation = false;
   RawRelaxation relaxation;
+  bool has_force_curves = false;
+  RawForceCurves force_curves;
 
-  // The variables the file provides (the relaxation's tau and einf included), in file order.
+  // The variables the file provides (the relaxation's tau and einf and the force curves' k
+  // included), in file order.
   std::vector<std::string> variables() const;
 };
 

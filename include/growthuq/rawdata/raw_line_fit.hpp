@@ -14,6 +14,7 @@
 
 #include "growthuq/distributions/fit.hpp"
 #include "growthuq/distributions/line_file.hpp"
+#include "growthuq/forcecurves/tube_stiffness.hpp"
 #include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/rawdata/raw_line_file.hpp"
 #include "growthuq/relaxation/analysis.hpp"
@@ -70,10 +71,17 @@ struct RelaxationFits {
   std::size_t ok_count() const;
 };
 
+// The force curves of [force_curves], processed (src/forcecurves/README.md).
+struct ForceCurveFits {
+  std::vector<CurveResult> curves;  // one per curve, in the file's order
+  std::vector<TubeStiffness> tubes;
+};
+
 struct RawLineFit {
   RawLineFile raw;
-  std::vector<VariableFit> variables;       // measurements in file order, then tau and einf
+  std::vector<VariableFit> variables;       // measurements in file order, then tau and einf, then k of force curves
   std::optional<RelaxationFits> relaxation;
+  std::optional<ForceCurveFits> force_curves;
   LineDistributions distributions;          // the chosen laws, as a line file would give them
 };
 
@@ -90,7 +98,7 @@ LineDistributions line_distributions_of(const RawLineFile& raw, const std::vecto
 
 // A readable table of the fits of one line: per variable n, family, parameters, the law's median
 // and IQR, KS D, AD A^2 and the AIC gap to the other families; then the curves' fit summary with
-// every failed curve and its reason.
+// every failed curve and its reason; then the force curves' report (curves per tube, rated how).
 std::string format_raw_fit_report(const RawLineFit& fit);
 
 // "mu=1.05, sigma=0.21" from describe()'s "lognormal(mu=1.05, sigma=0.21)".

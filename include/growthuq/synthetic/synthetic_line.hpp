@@ -12,6 +12,13 @@
 //                                                tube sheet (delta, p, d, h, rho) kept with them
 //   relaxation_truth.csv  each curve's true tau_slow, einf, fast phase and k0 (which no lab has;
 //                         for checking fits, not named by raw.ini)
+//   force_curves.csv, force_curves_sheet.csv, force_curves_truth.csv  on request
+//                      (force_curve_repetitions > 0): raw force-indentation curves of every
+//                      indented tube, that many per tube, drawn from the tube's true k (before
+//                      rounding) by synthetic/indentation_curve.hpp, the contact uniform in
+//                      [1.2, 1.8] um, the stage turning back at 6 uN; their sheet; and each
+//                      curve's true k and contact (which no lab has). `growthuq curves` reads them,
+//                      and raw.ini then takes k from them ([force_curves]) instead of indentation.csv.
 //   raw.ini            the raw line file naming all of the above
 // Values are independent draws from the true marginals (no correlation between quantities:
 // they come from different tubes; a campaign imposes its rank correlation), rounded to the
@@ -37,6 +44,7 @@
 #include "growthuq/distributions/line_file.hpp"
 #include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/relaxation/simulator.hpp"
+#include "growthuq/synthetic/indentation_curve.hpp"
 
 namespace growthuq {
 
@@ -57,6 +65,11 @@ struct SynthSettings {
   // (distributions/README.md).
   RampHoldProtocol protocol{100e-6, 5e-6, 30.0, 0.02};
   double force_noise = 0.002;  // standard deviation relative to the set point (10 nN at 5 uN)
+  // Raw force curves per indented tube (0: none) and their instrument: speed, samples, sensor
+  // stiffness, offset, drift and noise (the tube's k, the contact and the turning point are
+  // drawn or derived).
+  std::size_t force_curve_repetitions = 0;
+  IndentationTruth force_curve{};
 };
 
 struct SynthFile {
