@@ -85,7 +85,7 @@ void print_plan(const PreparedCampaign& prepared, const RunFootprint& footprint,
   const auto raw_lines = std::count_if(prepared.lines().begin(), prepared.lines().end(),
                                        [](const PreparedLine& line) { return !line.campaign_line.raw_path.empty(); });
   const bool bootstrap = c.data_uncertainty.replicates > 0;
-  std::cout << "\nresults in " << c.output_dir << ": summary.csv, sensitivity.csv" << (c.formats.csv ? ", samples.csv" : "")
+  std::cout << "\nresults in " << c.output_dir << ": summary.csv, sensitivity.csv, provenance.json" << (c.formats.csv ? ", samples.csv" : "")
             << (c.formats.hdf5 ? ", results.h5" : "") << (bootstrap ? ", data_uncertainty.csv" : "")
             << (bootstrap && raw_lines >= 2 ? ", comparisons.csv, letters.csv" : "") << "\n"
             << "estimated peak memory " << readable_size(footprint.memory_bytes) << " for one process ("

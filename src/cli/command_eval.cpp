@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "campaign/progress.hpp"
 #include "commands.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -47,6 +48,7 @@ struct EvalOptions {
   std::string in;
   std::string out;
   bool force = false;
+  bool quiet = false;  // no progress of the finite-element inverse on stderr
   // Model: closed_form (the thin shell) or shell_fe (the finite-element shell, with its flags).
   std::string fidelity = "closed_form";
   ShellFeFlags model;
@@ -240,6 +242,11 @@ int evaluate_point_shell_fe(const EvalOptions& options, const Instrument& parame
   tube.thickness = positive_flag(options.h_nm, "--h-nm", "a positive thickness in nm") * 1e-9;
   tube.diameter = positive_flag(options.d_um, "--d-um", "a positive diameter in um") * 1e-6;
   tube.plasmolysed_diameter = positive_flag(options.d0_um, "--d0-um", "a positive diameter in um") * 1e-6;
+  // One inverse takes seconds to minutes (README.md, "Fidelity"): say so before the wait.
+  if (choose_progress_mode(options.quiet) != ProgressMode::none) {
+    std::cerr << "eval: inverting the tube with the finite-element shell (" << describe(model)
+              << "); seconds to minutes (--quiet: no such line)\n";
+  }
   const ShellFeValues values = shell_fe_tube(tube, parameters, model);
   const ShellFeInverse& inverse = values.inverse;
   const bool ok = inverse.status == ShellFeStatus::ok;
@@ -291,9 +298,12 @@ int write_shell_fe_file(const EvalOptions& options, const Instrument& parameters
   CsvWriter writer(header);
   std::map<ShellFeStatus, std::size_t> counts;
   double seconds = 0;
+  // Seconds to minutes a tube: the tubes done, the time and the time left on stderr.
+  StepProgress progress(choose_progress_mode(options.quiet), std::cerr, "eval", "tube", block.size());
   for (std::size_t i = 0; i < block.size(); ++i) {
     const ShellFeMeasurement tube{block.column("k")[i], block.column("h")[i], block.column("d")[i], block.column("d0")[i]};
     const ShellFeValues values = shell_fe_tube(tube, parameters, model);
+    progress.advance();
     const bool ok = values.inverse.status == ShellFeStatus::ok;
     ++counts[values.inverse.status];
     seconds += values.inverse.seconds;
@@ -306,6 +316,7 @@ int write_shell_fe_file(const EvalOptions& options, const Instrument& parameters
     cells.emplace_back(to_string(values.inverse.status));
     writer.add_row(cells);
   }
+  progress.finish();
   write_result(options.out, writer.text(), overwrite);
   std::ostream& report = report_stream(options.out);
   report << table.rows.size() << (table.rows.size() == 1 ? " tube" : " tubes") << " from " << table.path
@@ -441,6 +452,8 @@ int run_eval(const Arguments& arguments) {
                                        "hoop_stress_MPa, wall_stiffness_N_per_m, status; - writes it to standard "
                                        "output (the report then goes to standard error)")
       ("force", po::bool_switch(&options.force), "overwrite --out if it exists")
+      ("quiet", po::bool_switch(&options.quiet), "no progress on stderr (shell_fe: a line before a single tube's "
+                                                 "inverse; for a file, the tubes done and the time left)")
       ("fidelity", po::value(&options.fidelity), "the model inverted: closed_form (default; the thin shell, instant), "
                                                  "corrected (the closed form corrected to the finite-element shell, "
                                                  "instant; needs h; writes p_MPa, E_MPa, status) or shell_fe (the "

@@ -47,7 +47,7 @@ TEST_CASE("growthuq check prints the plan and writes nothing") {
   REQUIRE(pme48 != std::string::npos);
   CHECK(wild_type < pme48);
   CHECK(check.out.find("rank correlation from the forward thin-shell model") != std::string::npos);
-  CHECK(check.out.find("results in planned: summary.csv, sensitivity.csv, samples.csv\n") != std::string::npos);
+  CHECK(check.out.find("results in planned: summary.csv, sensitivity.csv, provenance.json, samples.csv\n") != std::string::npos);
   CHECK(check.out.find("    samples k [N/m], h [nm], d [um], d0 [um], tau [s], einf [%]; ") != std::string::npos);
   CHECK(check.out.find("    models thin_shell_turgor, thin_shell_modulus, viscosity, growth\n") != std::string::npos);
   // The run's estimate (run_footprint.hpp) by hand: m = 6 inputs, o = 4 outputs, 2 lines, csv,
@@ -77,7 +77,7 @@ TEST_CASE("growthuq check states the data-uncertainty bootstrap a raw-data campa
                         "4000 more samples per line, 13.3 times the run's own ([data_uncertainty] replicates = 0 switches it off)\n") !=
         std::string::npos);
   // One raw-data line: the bootstrap's table, but no line comparisons (they need two).
-  CHECK(stated.out.find("results in planned: summary.csv, sensitivity.csv, samples.csv, results.h5, data_uncertainty.csv\n") != std::string::npos);
+  CHECK(stated.out.find("results in planned: summary.csv, sensitivity.csv, provenance.json, samples.csv, results.h5, data_uncertainty.csv\n") != std::string::npos);
   const CliOutcome three = run_cli("check " + std::string(GROWTHUQ_SOURCE_DIR) + "/tests/campaign/data/raw_comparisons.ini --out planned",
                                    scratch.root);
   REQUIRE(three.exit_code == 0);

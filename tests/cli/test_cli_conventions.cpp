@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::vector<std::string> command_names{"sample", "fit",      "eval",     "correlate", "relax",  "run",
-                                             "check",  "tradeoff", "synth",    "fit-line",  "indent"};
+                                             "check",  "tradeoff", "synth",    "fit-line",  "indent", "report"};
 
 }  // namespace
 

@@ -107,6 +107,8 @@ TEST_CASE("indent: the curve and the name = value lines, as the library computes
   INFO(inverse.err);
   REQUIRE(inverse.exit_code == 0);
   CHECK(inverse.out.find("status: ok") != std::string::npos);
+  // Not a silent wait: a line on stderr before the inverse starts.
+  CHECK(inverse.err.starts_with("eval: inverting the tube with the finite-element shell ("));
   const auto p_at = inverse.out.find("  p  ");
   REQUIRE(p_at != std::string::npos);
   const double p = parse_double(inverse.out.substr(p_at + 2 + 16, 22), "test", "p");
@@ -119,6 +121,8 @@ TEST_CASE("eval --fidelity shell_fe: every tube of a file, a flagged tube with e
   const CliOutcome run = run_cli("eval --fidelity shell_fe --mesh coarse --rho-um 0.25 --in tubes.csv --out results.csv", scratch.root);
   INFO(run.err);
   REQUIRE(run.exit_code == 0);
+  // The progress over the tubes ends with their count and time (stderr is no terminal here).
+  CHECK(run.err.find("eval: 2 tubes in ") != std::string::npos);
   const CsvTable table = read_csv((scratch.root / "results.csv").string());
   REQUIRE(table.rows.size() == 2);
   const auto column = [&](const std::string& name) {
