@@ -1,9 +1,11 @@
 #include "campaign/provenance.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <string_view>
 
 #include "core/sha256.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -14,11 +16,11 @@ namespace growthuq {
 namespace {
 
 // The references, once each (the sources sections of src/*/README.md hold the same).
-constexpr const char* arnoldi_2000 =
+constexpr std::string_view arnoldi_2000 =
     "Arnoldi M, Fritz M, Bäuerlein E, Radmacher M, Sackmann E, Boulbitch A (2000) Bacterial turgor pressure can be "
     "measured by atomic force microscopy. Phys Rev E 62:1034-1044; applied to pollen tubes under the cellular force "
     "microscope by Burri JT et al. (2019)";
-constexpr const char* vogler_2013 =
+constexpr std::string_view vogler_2013 =
     "Vogler H, Draeger C, Weber A, et al. (2013) The pollen tube: a soft shell with a hard core. Plant J 73:617-627";
 constexpr const char* study =
     "the Arabidopsis pollen-tube cellular-force-microscope study whose published medians and IQRs the shipped line "
@@ -26,51 +28,64 @@ constexpr const char* study =
 
 // What the README's fidelity table measured against the finite-element inverse (README.md,
 // "Fidelity"), so a report can warn of it.
-constexpr const char* closed_form_error =
+constexpr std::string_view closed_form_error =
     "p -55 %, E -57 % (median; -37 to -67 %) against the finite-element inverse over an Arabidopsis-like envelope "
     "(README.md, Fidelity)";
-constexpr const char* corrected_error =
+constexpr std::string_view corrected_error =
     "within 1.46 % of the finite-element inverse on 37 held-out tubes (rms 0.6 %); no value outside the fitted "
     "range (status outside_correction; src/correction/README.md)";
 
+// The evaluators a campaign can plan (their Evaluator::name()), what they compute, their
+// references (up to two, joined with "; ") and their measured error where there is one.
+struct KnownModel {
+  std::string_view name, description;
+  std::array<std::string_view, 2> references;
+  std::string_view measured_error;
+};
+
+constexpr std::array known_models{
+    KnownModel{"thin_shell_turgor",
+               "turgor p from the apparent stiffness under a probe of radius rho (Arnoldi relation, closed form; "
+               "src/mechanics/README.md, M2-M10)",
+               {arnoldi_2000, ""}, closed_form_error},
+    KnownModel{"thin_shell_modulus",
+               "wall modulus E from hoop equilibrium with logarithmic strain (src/mechanics/README.md, M1)",
+               {vogler_2013, ""}, closed_form_error},
+    KnownModel{"thin_shell_forward",
+               "forward thin shell: turgid diameter and stiffness from (p, E, h, d0) (src/mechanics/README.md)",
+               {vogler_2013, arnoldi_2000}, ""},
+    KnownModel{"corrected_turgor_modulus",
+               "the closed form times a correction fitted to the finite-element inverse (src/correction/README.md)",
+               {arnoldi_2000, vogler_2013}, corrected_error},
+    KnownModel{"shell_fe_turgor_modulus",
+               "finite-element shell inverse, one simulation per sample (src/fe/README.md)",
+               {"Hencky H (1928) Z techn Phys 9:215 (logarithmic strain energy); the shell and its validation: "
+                "src/fe/README.md",
+                ""},
+               ""},
+    KnownModel{"viscosity",
+               "wall viscosity eta = tau (1 - e_inf) E from the generalized Maxwell relaxation "
+               "(src/relaxation/README.md)",
+               {"Golub GH, Pereyra V (1973) The differentiation of pseudo-inverses and nonlinear least squares "
+                "problems whose variables separate. SIAM J Numer Anal 10:413-432 (the fit of raw relaxation curves)",
+                ""},
+               ""},
+    KnownModel{"growth",
+               "tip growth rate v = kappa (p - p0) d^2 / (4 eta h), kappa calibrated on the reference line "
+               "(src/growth/README.md)",
+               {"Lockhart JA (1965) An analysis of irreversible plant cell elongation. J Theor Biol 8:264-275",
+                "Ortega JKE (1985) Augmented growth equation for cell wall expansion. Plant Physiol 79:318-320"},
+               ""},
+};
+
 ProvenanceModel describe_model(std::string_view name) {
-  if (name == "thin_shell_turgor") {
-    return {std::string(name), "turgor p from the apparent stiffness under a probe of radius rho (Arnoldi relation, "
-                               "closed form; src/mechanics/README.md, M2-M10)",
-            arnoldi_2000, closed_form_error};
-  }
-  if (name == "thin_shell_modulus") {
-    return {std::string(name), "wall modulus E from hoop equilibrium with logarithmic strain (src/mechanics/README.md, M1)",
-            vogler_2013, closed_form_error};
-  }
-  if (name == "thin_shell_forward") {
-    return {std::string(name), "forward thin shell: turgid diameter and stiffness from (p, E, h, d0) (src/mechanics/README.md)",
-            std::string(vogler_2013) + "; " + arnoldi_2000, ""};
-  }
-  if (name == "corrected_turgor_modulus") {
-    return {std::string(name), "the closed form times a correction fitted to the finite-element inverse "
-                               "(src/correction/README.md)",
-            std::string(arnoldi_2000) + "; " + vogler_2013, corrected_error};
-  }
-  if (name == "shell_fe_turgor_modulus") {
-    return {std::string(name), "finite-element shell inverse, one simulation per sample (src/fe/README.md)",
-            "Hencky H (1928) Z techn Phys 9:215 (logarithmic strain energy); the shell and its validation: "
-            "src/fe/README.md",
-            ""};
-  }
-  if (name == "viscosity") {
-    return {std::string(name), "wall viscosity eta = tau (1 - e_inf) E from the generalized Maxwell relaxation "
-                               "(src/relaxation/README.md)",
-            "Golub GH, Pereyra V (1973) The differentiation of pseudo-inverses and nonlinear least squares problems "
-            "whose variables separate. SIAM J Numer Anal 10:413-432 (the fit of raw relaxation curves)",
-            ""};
-  }
-  if (name == "growth") {
-    return {std::string(name), "tip growth rate v = kappa (p - p0) d^2 / (4 eta h), kappa calibrated on the reference "
-                               "line (src/growth/README.md)",
-            "Lockhart JA (1965) An analysis of irreversible plant cell elongation. J Theor Biol 8:264-275; Ortega JKE "
-            "(1985) Augmented growth equation for cell wall expansion. Plant Physiol 79:318-320",
-            ""};
+  for (const KnownModel& known : known_models) {
+    if (known.name != name) continue;
+    std::string references;
+    for (const std::string_view reference : known.references) {
+      if (!reference.empty()) references += (references.empty() ? "" : "; ") + std::string(reference);
+    }
+    return {std::string(name), std::string(known.description), references, std::string(known.measured_error)};
   }
   return {std::string(name), "(no description)", "", ""};
 }
