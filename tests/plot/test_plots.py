@@ -504,6 +504,11 @@ class GrowthRate(unittest.TestCase):
             position = Shared.reference.lines.index(line)
             assert_box(self, self.figure, f"{line}/v_exp", measured, position - 0.2)
             assert_box(self, self.figure, f"{line}/v", predicted, position + 0.2)
+            # The measured box is draws from the fitted law, counted as such, not as tubes.
+            self.assertEqual(one(self.figure, f"{line}/growth/n").get_text(),
+                             f"{reference.counted(line, 'v_exp').size} draws\n"
+                             f"{reference.counted(line, 'v').size} samples")
+        self.assertIn("draws from the fitted v_exp law", self.figure.axes[0].get_title())
 
     def test_labels_units_and_the_calibration_note(self):
         boxes, scatter = self.figure.axes[:2]

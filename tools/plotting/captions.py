@@ -4,8 +4,9 @@ embedded figure."""
 from .boxes import box_caption
 
 FIXED = {
-    "growth_rate": "Predicted against measured growth rate per line; kappa is calibrated on the reference line, "
-                   "which therefore agrees by construction.",
+    "growth_rate": "Predicted against measured growth rate per line: hatched boxes are draws from the line's "
+                   "fitted v_exp law (not its tubes), filled ones the predicted v of its samples; kappa is "
+                   "calibrated on the reference line, which therefore agrees by construction.",
     "correlogram": "Inputs and outputs of one line (samples with status ok): histograms on the diagonal, scatter "
                    "below (first 2000 samples), Spearman coefficients above.",
     "sensitivity": "First-order sensitivity S = Var(E[output | input]) / Var(output) of every input for every "
