@@ -72,6 +72,10 @@ TEST_CASE("growthuq check states the data-uncertainty bootstrap a raw-data campa
   const std::string raw = std::string(GROWTHUQ_SOURCE_DIR) + "/tests/campaign/data/raw_campaign.ini";
   const CliOutcome stated = run_cli("check " + raw + " --out planned", scratch.root);
   REQUIRE(stated.exit_code == 0);
+  // The curve fits (seconds) are no silent wait: their progress on stderr, as the run gives it;
+  // --quiet silences it.
+  CHECK(stated.err.starts_with("fitting relaxation curves of line wild_type: 22 curves in "));
+  CHECK(run_cli("check " + raw + " --out planned --quiet", scratch.root).err.empty());
   // 20 x 200 = 4000 samples per line, 4000 / 300 = 13.3 times the run's.
   CHECK(stated.out.find("data uncertainty: a bootstrap of 20 replicates x 200 samples per line (each refits the raw-data laws): "
                         "4000 more samples per line, 13.3 times the run's own ([data_uncertainty] replicates = 0 switches it off)\n") !=
