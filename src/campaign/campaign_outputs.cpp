@@ -20,6 +20,7 @@
 #include "campaign/checkpoint.hpp"
 #include "campaign/csv_results.hpp"
 #include "campaign/output_lock.hpp"
+#include "campaign/provenance.hpp"
 #include "growthuq/campaign/data_uncertainty.hpp"
 #include "campaign/line_comparison_outputs.hpp"
 #include "campaign/raw_data_outputs.hpp"
@@ -61,9 +62,9 @@ std::string shell_word(const std::string& path) {
 
 // The result files of a run, in the order the commit moves them into the output directory:
 // summary.csv last, so a directory with a summary.csv holds the whole set.
-constexpr std::array<const char*, 7> result_names{results_h5_name,  samples_csv_name,     data_uncertainty_csv_name,
+constexpr std::array<const char*, 8> result_names{results_h5_name,      samples_csv_name, data_uncertainty_csv_name,
                                                   comparisons_csv_name, letters_csv_name, sensitivity_csv_name,
-                                                  summary_csv_name};
+                                                  provenance_json_name, summary_csv_name};
 
 // Where a run writes its results until they are all complete (output_dir/staging).
 std::string staging_directory(const std::string& output_dir) { return in_directory(output_dir, staging_name); }
@@ -251,7 +252,11 @@ class OutputObserver final : public RunObserver {
     write_sensitivity(sensitivity_in_campaign_order(), shapley_, sobol_, h5_ ? &*h5_ : nullptr, staging_);
     const std::string raw_data_report =
         write_raw_data_outputs(campaign_, summaries_, std::move(uncertainty), h5_ ? &*h5_ : nullptr, staging_);
+    // Written whatever the formats: it is what `growthuq report` and a reader of the CSVs cite.
+    const RunProvenance provenance = run_provenance(campaign_);
+    write_file_atomically(in_directory(staging_, provenance_json_name), provenance_json(provenance), Overwrite::allow);
     if (h5_) {
+      write_provenance(*h5_, provenance);
       CampaignMetadata metadata;
       metadata.campaign_text = c.text;
       metadata.campaign_path = c.path;

@@ -31,5 +31,6 @@ int run_synth(const Arguments& arguments);
 int run_fit_line(const Arguments& arguments);
 int run_indent(const Arguments& arguments);
 int run_fit_correction(const Arguments& arguments);
+int run_report(const Arguments& arguments);
 
 }  // namespace growthuq::cli

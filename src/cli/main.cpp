@@ -35,6 +35,7 @@ constexpr std::array commands{
     Command{"synth", "draw a SYNTHETIC raw data set (tables, curves) from true line distributions", growthuq::cli::run_synth},
     Command{"fit-line", "fit a plant line's distributions from its raw data (raw.ini) to a line file", growthuq::cli::run_fit_line},
     Command{"indent", "finite-element tube under the probe: force curve, k, d (minutes per curve)", growthuq::cli::run_indent},
+    Command{"report", "one self-contained HTML report of a run: tables, figures, methods paragraph, references", growthuq::cli::run_report},
     Command{"fit-correction", "fit fidelity corrected to finite-element training data (writes its C++ text)", growthuq::cli::run_fit_correction},
 };
 

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string_view>
 #include <utility>
+#include <variant>
 
 #include "core/interrupt.hpp"
 #include "hdf5_output_file.hpp"
@@ -664,21 +665,27 @@ void write_on_object(H5::H5File& file, const std::string& path, Write write) {
 }  // namespace
 
 void ResultsH5Writer::write_attribute(const std::string& path, const std::string& name, const std::string& value) {
-  if (!file_) throw std::logic_error("ResultsH5Writer::write_attribute after finish()");
-  hdf5::use_error_handler();  // per thread: results.h5 is written on a thread of its own
-  try {
-    write_on_object(file_->file, path, [&](H5::H5Object& object) { write_string_attribute(object, name, value); });
-  } catch (const H5::Exception& error) {
-    file_->out.rethrow(error);
-  }
-  file_->out.throw_if_failed();
+  write_attribute_value(path, name, value);
 }
 
 void ResultsH5Writer::write_attribute(const std::string& path, const std::string& name, double value) {
+  write_attribute_value(path, name, value);
+}
+
+void ResultsH5Writer::write_attribute(const std::string& path, const std::string& name, std::uint64_t value) {
+  write_attribute_value(path, name, value);
+}
+
+void ResultsH5Writer::write_attribute_value(const std::string& path, const std::string& name,
+                                            const std::variant<std::string, double, std::uint64_t>& value) {
   if (!file_) throw std::logic_error("ResultsH5Writer::write_attribute after finish()");
   hdf5::use_error_handler();  // per thread: results.h5 is written on a thread of its own
   try {
-    write_on_object(file_->file, path, [&](H5::H5Object& object) { write_f64_attribute(object, name, value); });
+    write_on_object(file_->file, path, [&](H5::H5Object& object) {
+      if (const auto* text = std::get_if<std::string>(&value)) write_string_attribute(object, name, *text);
+      if (const auto* real = std::get_if<double>(&value)) write_f64_attribute(object, name, *real);
+      if (const auto* count = std::get_if<std::uint64_t>(&value)) write_u64_attribute(object, name, *count);
+    });
   } catch (const H5::Exception& error) {
     file_->out.rethrow(error);
   }

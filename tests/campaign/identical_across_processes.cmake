@@ -1,5 +1,5 @@
 # Runs a test campaign once without MPI and once under `mpirun -np PROCESSES`, and requires
-# samples.csv, summary.csv, sensitivity.csv and (for raw-data lines with a bootstrap) data_uncertainty.csv and
+# samples.csv, summary.csv, sensitivity.csv, provenance.json and (for raw-data lines with a bootstrap) data_uncertainty.csv and
 # the line comparisons' comparisons.csv and letters.csv to be
 # identical byte for byte, and results.h5 value for value (its analyses and raw-data fits are
 # computed by all processes together; the command line stored in it names another --out, so its
@@ -24,7 +24,7 @@ execute_process(COMMAND "${MPIEXEC}" -np ${PROCESSES} --oversubscribe "${CLI}" r
 if(NOT mpi_result EQUAL 0)
   message(FATAL_ERROR "run under mpirun -np ${PROCESSES} failed (${mpi_result}): ${mpi_error}")
 endif()
-set(compared samples.csv summary.csv sensitivity.csv)
+set(compared samples.csv summary.csv sensitivity.csv provenance.json)
 foreach(optional data_uncertainty.csv comparisons.csv letters.csv)
   if(EXISTS "${WORK}/serial/${optional}")
     list(APPEND compared ${optional})

@@ -84,7 +84,7 @@ TEST_CASE("a second run into a directory a live run holds is refused naming it; 
   const fs::path out = scratch.root / "out";
   const CliOutcome first = run_in(scratch.root, cli({"run", small_campaign, "--quiet", "--out", "out"}));
   REQUIRE_MESSAGE(first.exit_code == 0, first.err);
-  CHECK(entries(out) == std::set<std::string>{"samples.csv", "sensitivity.csv", "summary.csv"});  // no lock file left
+  CHECK(entries(out) == std::set<std::string>{"provenance.json", "samples.csv", "sensitivity.csv", "summary.csv"});  // no lock file left
   const std::string results = slurp(out / "samples.csv");
   // The live run's checkpoint: without the lock this directory reads as an interrupted run.
   fs::create_directories(out / "checkpoint");
@@ -110,7 +110,7 @@ TEST_CASE("a second run into a directory a live run holds is refused naming it; 
   REQUIRE(fs::exists(out / run_lock_name));
   const CliOutcome rerun = run_in(scratch.root, cli({"run", small_campaign, "--quiet", "--out", "out", "--force"}));
   CHECK_MESSAGE(rerun.exit_code == 0, rerun.err);
-  CHECK(entries(out) == std::set<std::string>{"samples.csv", "sensitivity.csv", "summary.csv"});
+  CHECK(entries(out) == std::set<std::string>{"provenance.json", "samples.csv", "sensitivity.csv", "summary.csv"});
   CHECK(slurp(out / "samples.csv") == results);
 }
 
@@ -160,7 +160,7 @@ TEST_CASE("a stop during the final writes commits nothing and keeps the checkpoi
   pool->stop_when([] { return 0; });
   settings.checkpointing = Checkpointing::resume;
   run_campaign_with_outputs(prepared, *pool, settings, report, log);
-  CHECK(entries(scratch.root / "out") == std::set<std::string>{"samples.csv", "sensitivity.csv", "summary.csv"});
+  CHECK(entries(scratch.root / "out") == std::set<std::string>{"provenance.json", "samples.csv", "sensitivity.csv", "summary.csv"});
   CHECK(report.str().find("campaign 'small': 2 lines x 200 samples") != std::string::npos);
 }
 
@@ -203,7 +203,7 @@ TEST_CASE("a full disk fails the run without touching the old results, keeps the
   CHECK(failed.err.ends_with("; the checkpoint keeps the finished chunks: make room, then finish with: growthuq run "
                              "--resume out\n"));
   // The old results as they were, nothing new beside them, the checkpoint kept.
-  CHECK(entries(disk.where / "out") == std::set<std::string>{"checkpoint", "results.h5", "samples.csv", "sensitivity.csv", "summary.csv"});
+  CHECK(entries(disk.where / "out") == std::set<std::string>{"checkpoint", "provenance.json", "results.h5", "samples.csv", "sensitivity.csv", "summary.csv"});
   CHECK(slurp(disk.where / "out" / "samples.csv") == old_samples);
   CHECK(slurp(disk.where / "out" / "results.h5") == old_h5);
   CHECK(has_checkpoint((disk.where / "out").string()));
@@ -212,7 +212,7 @@ TEST_CASE("a full disk fails the run without touching the old results, keeps the
   fs::remove(disk.where / "filler");
   const CliOutcome resumed = run_in(disk.where, cli({"run", "--resume", "out", "--quiet"}));
   REQUIRE_MESSAGE(resumed.exit_code == 0, resumed.err);
-  CHECK(entries(disk.where / "out") == std::set<std::string>{"results.h5", "samples.csv", "sensitivity.csv", "summary.csv"});
+  CHECK(entries(disk.where / "out") == std::set<std::string>{"provenance.json", "results.h5", "samples.csv", "sensitivity.csv", "summary.csv"});
   for (const char* name : {"samples.csv", "summary.csv", "results.h5"}) {
     CAPTURE(name);
     CHECK(slurp(disk.where / "out" / name) == slurp(reference / "out" / name));

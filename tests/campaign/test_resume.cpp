@@ -225,7 +225,7 @@ TEST_CASE("after SIGKILL and a torn record, a changed line file is refused; rest
                            (fs::path("out") / "checkpoint" / "manifest.txt").string() +
                            " (to run the file as it is now, start the run again with --force)");
   for (std::size_t i = 1; i < 3; ++i) CHECK(progress[i].find(" 100000 samples in ") != std::string::npos);
-  CHECK(entries(work / "out") == std::set<std::string>{"samples.csv", "sensitivity.csv", "summary.csv", "results.h5"});
+  CHECK(entries(work / "out") == std::set<std::string>{"provenance.json", "samples.csv", "sensitivity.csv", "summary.csv", "results.h5"});
 }
 
 TEST_CASE("a serially interrupted run resumes under mpirun -np 2 to the identical result") {

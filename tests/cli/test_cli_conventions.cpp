@@ -18,8 +18,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::vector<std::string> command_names{"sample", "fit",      "eval",  "correlate", "relax",  "curves",
-                                             "run",    "check",    "synth", "tradeoff",  "fit-line", "indent"};
+const std::vector<std::string> command_names{"sample", "fit",      "eval",  "correlate", "relax",    "curves", "run",
+                                             "check",  "tradeoff", "synth", "fit-line",  "indent",   "report"};
 
 }  // namespace
 

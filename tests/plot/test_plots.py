@@ -27,6 +27,7 @@ from pathlib import Path
 
 import h5py
 import numpy as np
+from matplotlib import colors as mcolors
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.image import imread
 from matplotlib.legend import Legend
@@ -39,6 +40,9 @@ PLOTTING = None     # the plotting package, imported from SOURCE/tools
 TOLERANCE = 1e-12   # relative: the plots must carry the very numbers computed here (both are
                     # numpy's linear-interpolation quantiles of the same doubles)
 EXPECTED_UNITS = {"p": "MPa", "E": "MPa", "eta": "MPa s", "v": "um/s"}
+# The units as the figures typeset them (µ for the files' u, a centred dot for a product).
+TYPESET = {"MPa": "MPa", "MPa s": "MPa·s", "um/s": "µm/s", "um": "µm", "N/m": "N/m", "nm": "nm", "s": "s",
+           "%": "%", "frac": "frac"}
 
 
 def close(a, b, tolerance=TOLERANCE):
@@ -216,9 +220,14 @@ class CommandLine(unittest.TestCase):
                 self.assertIn(f"wrote {path}", completed.stdout.splitlines())
                 check(self, path)
         written = [line for line in completed.stdout.splitlines() if line.startswith("wrote ")]
-        self.assertEqual(len(written), 2 * len(stems))
+        self.assertEqual(len(written), 2 * len(stems) + 1)
         self.assertEqual(sorted(p.name for p in plots.iterdir()),
-                         sorted(f"{s}.{e}" for s in stems for e in ("png", "pdf")))
+                         sorted([f"{s}.{e}" for s in stems for e in ("png", "pdf")] + ["captions.md"]))
+        # The captions beside the figures, one paragraph per figure in the order drawn.
+        captions = (plots / "captions.md").read_text().split("\n\n")[:-1]
+        self.assertEqual([c.split("**")[1] for c in captions],
+                         ["boxes", "growth_rate"] + [s for s in stems if s.startswith("correlogram_")] + ["sensitivity"])
+        self.assertIn("Box q1-q3, line at the median, whiskers 10-90 %.", captions[0])
         self.assertRegex(completed.stdout, r"note: skipped relaxation curves: .*relaxation")
         self.assertRegex(completed.stdout, r"note: skipped trade plot: no .*tradeoff\.csv")
         status = Shared.reference.status
@@ -295,14 +304,15 @@ class BoxPlots(unittest.TestCase):
     def test_one_panel_per_quantity_with_units_and_one_box_per_line(self):
         reference = Shared.reference
         panels = {ax.get_ylabel(): ax for ax in self.figure.axes}
-        self.assertEqual(sorted(panels), sorted(f"{q} ({u})" for q, u in EXPECTED_UNITS.items()))
+        self.assertEqual(sorted(panels), sorted(f"{q} ({TYPESET[u]})" for q, u in EXPECTED_UNITS.items()))
         for quantity, unit in EXPECTED_UNITS.items():
-            ax = panels[f"{quantity} ({unit})"]
+            ax = panels[f"{quantity} ({TYPESET[unit]})"]
             self.assertEqual(unit, reference.unit(reference.lines[0], quantity))
             boxes = [p for p in ax.patches if (p.get_gid() or "").endswith("/box")]
             self.assertEqual(len(boxes), len(reference.lines))
             self.assertEqual([t.get_text() for t in ax.get_xticklabels()], reference.lines)
             self.assertEqual(ax.get_yscale(), "log" if quantity in ("E", "eta") else "linear")
+            self.assertEqual(ax.get_title().endswith(" (log scale)"), quantity in ("E", "eta"), quantity)
 
     def test_boxes_are_quartiles_whiskers_are_10_and_90_percentiles_and_n_is_the_counted_samples(self):
         reference = Shared.reference
@@ -323,9 +333,15 @@ class BoxPlots(unittest.TestCase):
                 self.assertTrue(close([row[k] for k in expected], list(expected.values())), key)
 
 
-    def test_without_a_bootstrap_no_data_interval_is_drawn_and_the_title_says_so(self):
+    def test_without_a_bootstrap_no_data_interval_is_drawn_and_the_caption_says_so(self):
         self.assertEqual(gid_artists(self.figure, r".*/data_interval"), [])
-        self.assertIn("no data interval (no bootstrap over tubes)", self.figure._suptitle.get_text())
+        self.assertIn("No data interval (no bootstrap over tubes).", PLOTTING.boxes.box_caption(Shared.results))
+
+    def test_the_caption_is_outside_the_figure(self):
+        # One title line naming the quantities; what the boxes mean is the caption's (captions.py).
+        self.assertEqual(self.figure._suptitle.get_text(),
+                         f"{Shared.results.campaign_name}: turgor pressure, wall modulus, wall viscosity, "
+                         "growth rate (predicted) per line")
 
 
 class DataIntervals(unittest.TestCase):
@@ -347,7 +363,8 @@ class DataIntervals(unittest.TestCase):
         cls.reference = Reference(out / "results.h5")
         with h5py.File(out / "results.h5", "r") as h5:
             cls.tubes = [int(n) for n in h5["lines/wild_type/fits"]["n"]]
-        cls.figure = PLOTTING.boxes.box_figure(PLOTTING.results.read_results(out / "results.h5"))
+        cls.results = PLOTTING.results.read_results(out / "results.h5")
+        cls.figure = PLOTTING.boxes.box_figure(cls.results)
 
     def test_an_error_bar_on_each_median_spans_its_data_interval(self):
         reference = self.reference
@@ -363,8 +380,9 @@ class DataIntervals(unittest.TestCase):
         legend = one(self.figure, "data_interval_legend")
         self.assertEqual([t.get_text() for t in legend.get_texts()],
                          ["median's 95 % data interval (bootstrap over tubes)"])
-        self.assertIn("black bar: the median's 95 % data interval", self.figure._suptitle.get_text())
-        self.assertIn("tubes behind a raw-data line's laws", self.figure._suptitle.get_text())
+        caption = PLOTTING.boxes.box_caption(self.results)
+        self.assertIn("Black bar: the median's 95 % data interval", caption)
+        self.assertIn("the tubes behind a raw-data line's laws", caption)
 
     def test_the_count_under_a_box_says_samples_and_for_raw_data_the_tubes(self):
         fewest, most = min(self.tubes), max(self.tubes)
@@ -415,8 +433,8 @@ class Letters(unittest.TestCase):
             extent = text.get_window_extent()
             self.assertGreater(extent.y0, whisker_top, key)             # above the whisker
             self.assertLessEqual(extent.y1, ax.get_window_extent().y1, key)  # inside the panel
-        self.assertTrue(any("letters: lines sharing a letter are not distinguishable" in t.get_text()
-                            for t in self.figure.texts))  # the suptitle
+        self.assertIn("Letters: lines sharing a letter are not distinguishable",
+                      PLOTTING.boxes.box_caption(self.results))
 
     def test_a_letters_table_without_its_members_is_one_line_naming_it(self):
         broken = Shared.tmp / "broken-letters"
@@ -486,12 +504,17 @@ class GrowthRate(unittest.TestCase):
             position = Shared.reference.lines.index(line)
             assert_box(self, self.figure, f"{line}/v_exp", measured, position - 0.2)
             assert_box(self, self.figure, f"{line}/v", predicted, position + 0.2)
+            # The measured box is draws from the fitted law, counted as such, not as tubes.
+            self.assertEqual(one(self.figure, f"{line}/growth/n").get_text(),
+                             f"{reference.counted(line, 'v_exp').size} draws\n"
+                             f"{reference.counted(line, 'v').size} samples")
+        self.assertIn("draws from the fitted v_exp law", self.figure.axes[0].get_title())
 
     def test_labels_units_and_the_calibration_note(self):
         boxes, scatter = self.figure.axes[:2]
-        self.assertEqual(boxes.get_ylabel(), "v (um/s)")
-        self.assertEqual(scatter.get_xlabel(), "measured v_exp (um/s)")
-        self.assertEqual(scatter.get_ylabel(), "predicted v (um/s)")
+        self.assertEqual(boxes.get_ylabel(), "v (µm/s)")
+        self.assertEqual(scatter.get_xlabel(), "measured v_exp (µm/s)")
+        self.assertEqual(scatter.get_ylabel(), "predicted v (µm/s)")
         drawn = [p for p in boxes.patches if p.get_gid().endswith("/box")]
         self.assertEqual(len(drawn), 2 * len(Shared.reference.lines))
         title = self.figure._suptitle.get_text()
@@ -576,7 +599,7 @@ class Correlogram(unittest.TestCase):
         y_ticks = {i: [t for t in ax.texts if t.get_gid() == f"ytick/{i}"] for i in range(k)}
         for j, name in enumerate(names):
             attrs = reference.attrs[line, name]
-            label = f"{attrs['quantity']} ({attrs['unit']})"
+            label = f"{attrs['quantity']} ({TYPESET[attrs['unit']]})"
             self.assertEqual(one(figure, f"xlabel/{j}").get_text(), label)
             self.assertEqual(one(figure, f"ylabel/{j}").get_text(), label)
         for i, row_name in enumerate(names):
@@ -766,7 +789,7 @@ class RelaxationAndTrade(unittest.TestCase):
         figure = PLOTTING.relaxation.relaxation_figure(self.results)
         self.assertEqual(len(figure.axes), 2)
         for ax, line in zip(figure.axes, ("wild_type", "pme48")):
-            self.assertEqual((ax.get_xlabel(), ax.get_ylabel(), ax.get_xscale()), ("t (s)", "F (uN)", "log"))
+            self.assertEqual((ax.get_xlabel(), ax.get_ylabel(), ax.get_xscale()), ("t (s)", "F (µN)", "log"))
             curves = self.curves[line]
             expected = ([c for c in curves if c[1] == "ok"] + [c for c in curves if c[1] != "ok"])[:4]
             drawn = [l.get_gid().split("/")[1] for l in ax.lines if l.get_gid().endswith("/data")]
@@ -780,6 +803,17 @@ class RelaxationAndTrade(unittest.TestCase):
                 fitted = one(figure, f"{line}/{name}/fit")
                 self.assertTrue(np.array_equal(fitted.get_ydata(), fit[after & np.isfinite(fit)]))
                 self.assertEqual(fitted.get_xdata().size, 0 if status != "ok" else after.sum())
+                self.assertEqual(mcolors.to_rgb(fitted.get_color()), mcolors.to_rgb(data.get_color()))
+            # Curves of one line told apart: hues at least 0.3 apart in RGB (shades of one light
+            # line colour were about 0.1 apart), and a marker each.
+            data = [l for l in ax.lines if l.get_gid().endswith("/data")]
+            hues = [np.array(mcolors.to_rgb(l.get_color())) for l in data]
+            for a in range(len(hues)):
+                for b in range(a + 1, len(hues)):
+                    self.assertGreater(np.linalg.norm(hues[a] - hues[b]), 0.3, (line, a, b))
+            self.assertEqual(len({l.get_marker() for l in data}), len(data))
+            fitted_labels = [t.get_text() for t in ax.get_legend().get_texts() if "tau" in t.get_text()]
+            self.assertTrue(fitted_labels and all("tau fast" in t and ", slow " in t for t in fitted_labels))
 
     def test_trade_panels_show_errors_ci_and_time_against_samples(self):
         rows = PLOTTING.tradeoff_data.read_tradeoff(self.directory / "tradeoff.csv")
@@ -787,7 +821,7 @@ class RelaxationAndTrade(unittest.TestCase):
         panels = figure.axes
         quantities = [("p", "MPa"), ("E", "MPa"), ("eta", "MPa s"), ("v", "um/s"), ("v_exp", "um/s")]
         self.assertEqual([ax.get_title() for ax in panels],
-                         [f"{q} ({unit})" for q, unit in quantities] + ["time of the run (all lines)"])
+                         [f"{q} ({TYPESET[unit]})" for q, unit in quantities] + ["time of the run (all lines)"])
         for ax in panels:
             self.assertEqual((ax.get_xscale(), ax.get_yscale()), ("log", "log"))
             self.assertEqual(ax.get_xlabel(), "samples per line")

@@ -72,7 +72,8 @@ def _draw_quantity(ax, results, quantity, colors):
         label = count_label(spread.n, flagged, line.tubes)
         label_below(ax, position, label, f"{line.name}/{quantity}")
         text_lines = max(text_lines, label.count("\n") + 1)
-    if quantity in LOG_QUANTITIES and lows and min(lows) > 0:
+    log = quantity in LOG_QUANTITIES and lows and min(lows) > 0
+    if log:
         ax.set_yscale("log")
         readable_log_axis(ax.yaxis)
     room_for_labels(ax, text_lines)
@@ -82,7 +83,8 @@ def _draw_quantity(ax, results, quantity, colors):
     ax.set_xticks(range(len(results.lines)), results.line_names(), rotation=30, ha="right",
                   rotation_mode="anchor")
     ax.set_ylabel(axis_label(quantity, unit))
-    ax.set_title(long_name(quantity))
+    # Log panels sit beside linear ones: the title says which.
+    ax.set_title(long_name(quantity) + (" (log scale)" if log else ""))
     ax.grid(axis="y", which="major", alpha=0.3)
     return intervals
 
@@ -109,11 +111,18 @@ def box_figure(results):
             drew_intervals = True
     for ax in axes[len(quantities):]:
         ax.remove()
-    intervals = ("black bar: the median's 95 % data interval" if drew_intervals
-                 else "no data interval (no bootstrap over tubes)")
-    figure.suptitle(f"{results.campaign_name}: box q1-q3, line median, whiskers 10-90 %\n{intervals}"
-                    "\nunder each box: Monte Carlo samples holding a value (v = 0 for no_growth counts),"
-                    "\ntubes behind a raw-data line's laws; flagged: samples lacking it, left out"
-                    + ("\nletters: lines sharing a letter are not distinguishable (line comparisons)"
-                       if results.letters else ""), fontsize=9)
+    figure.suptitle(f"{results.campaign_name}: {', '.join(long_name(q) for q in quantities)} per line", fontsize=9)
     return figure
+
+
+def box_caption(results):
+    """What the box figure shows, for a caption beside it (the report's, tools/plot's
+    captions.md) rather than inside it, where it took five lines of the figure."""
+    drew_intervals = any(line.data_intervals for line in results.lines)
+    intervals = ("Black bar: the median's 95 % data interval (bootstrap over tubes)." if drew_intervals
+                 else "No data interval (no bootstrap over tubes).")
+    return (f"Box q1-q3, line at the median, whiskers 10-90 %. {intervals} Under each box: the Monte Carlo samples "
+            "holding a value (v = 0 for no_growth counts), the tubes behind a raw-data line's laws, and the "
+            "flagged samples lacking the quantity, which are left out."
+            + (" Letters: lines sharing a letter are not distinguishable (line comparisons)." if results.letters
+               else ""))

@@ -124,13 +124,14 @@ def run(arguments, out=sys.stdout):
         raise PlotInputError(f"{results_dir}: no such directory (expected the output directory of "
                              "`growthuq run`)")
     results = read_results(results_dir / "results.h5")
-    from .output import refuse_overwrite, save_figure, target_paths  # matplotlib: after the checks
+    from .output import refuse_overwrite, save_figure, save_text, target_paths  # matplotlib: after the checks
     out_dir = arguments.out or results_dir / "plots"
     notes = []
     made = build_figures(results, results_dir, arguments.figures, notes)
     paths = target_paths(out_dir, [stem for stem, _ in made], arguments.formats)
+    captions_path = out_dir / "captions.md"
     if not arguments.force:
-        refuse_overwrite(paths)
+        refuse_overwrite(paths + ([captions_path] if made else []))
     try:
         out_dir.mkdir(parents=True, exist_ok=True)
     except OSError as error:
@@ -140,6 +141,10 @@ def run(arguments, out=sys.stdout):
             path = out_dir / f"{stem}.{extension}"
             save_figure(figure, path)
             print(f"wrote {path}", file=out)
+    if made:
+        from .captions import captions_markdown
+        save_text(captions_markdown([stem for stem, _ in made], results), captions_path)
+        print(f"wrote {captions_path}", file=out)
     for note in flag_notes(results) + notes:
         print(f"note: {note}", file=out)
     return 0

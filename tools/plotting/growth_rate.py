@@ -36,14 +36,13 @@ def _paired_boxes(ax, results, pairs, colors):
             if spread.n:
                 draw_box(ax, position + offset, spread, colors[name], f"{name}/{kind}", width=0.34,
                          hatch=hatch)
-        counts = (f"n = {predicted.n}" if measured.n == predicted.n
-                  else f"n = {measured.n} / {predicted.n}")
-        label_below(ax, position, counts, f"{name}/growth")
-    room_for_labels(ax, 1)
+        # The measured box is the line's fitted v_exp law sampled, not its tubes: say draws.
+        label_below(ax, position, f"{measured.n} draws\n{predicted.n} samples", f"{name}/growth")
+    room_for_labels(ax, 2)
     ax.set_xlim(-0.6, len(names) - 0.4)
     ax.set_xticks(range(len(names)), names, rotation=30, ha="right", rotation_mode="anchor")
     ax.set_ylabel(axis_label("v", _unit(results)))
-    ax.set_title("measured (hatched) and predicted (filled)")
+    ax.set_title("measured (hatched: draws from the fitted v_exp law) and predicted (filled)")
     ax.grid(axis="y", alpha=0.3)
 
 

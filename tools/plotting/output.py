@@ -36,3 +36,16 @@ def save_figure(figure, path):
         raise PlotInputError(f"{path}: cannot write ({error.strerror})") from None
     finally:
         partial.unlink(missing_ok=True)  # gone after the rename; left only by a failure
+
+
+def save_text(text, path):
+    """Writes `text` to `path` atomically, as save_figure does a figure."""
+    path = Path(path)
+    partial = path.with_name(path.name + ".partial")
+    try:
+        partial.write_text(text, encoding="utf-8")
+        os.replace(partial, path)
+    except OSError as error:
+        raise PlotInputError(f"{path}: cannot write ({error.strerror})") from None
+    finally:
+        partial.unlink(missing_ok=True)

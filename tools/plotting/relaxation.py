@@ -2,14 +2,15 @@
 curves: one panel per line with relaxation data, a few curves each (fitted curves first: status ok,
 or extrapolated, a tau_slow beyond the hold),
 measured force as points and the fitted force as a line, on a log time axis (t = 0 at the force
-maximum; points at t <= 0, the ramp, cannot be shown on it)."""
+maximum; points at t <= 0, the ramp, cannot be shown on it). Within a panel every curve has its
+own hue and marker; the legend gives each fit's fast and slow relaxation times."""
 import math
 
 import numpy as np
-from matplotlib import colors as mcolors
+import matplotlib
 
 from .errors import FigureSkipped
-from .style import line_colors, new_figure, styled
+from .style import axis_label, new_figure, styled
 
 CURVES_PER_LINE = 4
 # Statuses of curves that were fitted; an extrapolated fit has tau_slow beyond the hold.
@@ -24,11 +25,10 @@ def chosen_curves(curves, count=CURVES_PER_LINE):
     return ordered[:count]
 
 
-def _shades(color, count):
-    """`count` shades of one line's colour, from darker (mixed with black) to lighter (white)."""
-    base = np.array(mcolors.to_rgb(color))
-    mixes = np.linspace(-0.35, 0.45, count) if count > 1 else [0.0]
-    return [tuple(base * (1 + f) if f < 0 else base + (1 - base) * f) for f in mixes]
+# Within a panel (one line) each curve has its own hue and marker: shades of one line colour
+# could not be told apart where the line's colour is light.
+CURVE_COLORS = matplotlib.colormaps["Dark2"].colors
+CURVE_MARKERS = ("o", "s", "^", "D")
 
 
 def _legend_text(curve):
@@ -36,23 +36,25 @@ def _legend_text(curve):
         return f"{curve.name} ({curve.status})"
     if "tau_fast_s" in curve.fit and "tau_slow_s" in curve.fit:
         extrapolated = ", extrapolated" if curve.status == "extrapolated" else ""
-        return f"{curve.name} (tau {curve.fit['tau_fast_s']:.2g} s, {curve.fit['tau_slow_s']:.2g} s{extrapolated})"
+        return (f"{curve.name} (tau fast {curve.fit['tau_fast_s']:.2g} s, slow {curve.fit['tau_slow_s']:.2g} s"
+                f"{extrapolated})")
     return curve.name
 
 
-def _draw_line(ax, line, color):
+def _draw_line(ax, line):
     shown = chosen_curves(line.relaxation)
-    for curve, shade in zip(shown, _shades(color, len(shown))):
+    for index, curve in enumerate(shown):
+        shade = CURVE_COLORS[index % len(CURVE_COLORS)]
         after_maximum = curve.t_s > 0
-        ax.plot(curve.t_s[after_maximum], curve.F_uN[after_maximum], "o", markersize=2.2,
-                color=shade, alpha=0.55, markeredgewidth=0, gid=f"{line.name}/{curve.name}/data")
+        ax.plot(curve.t_s[after_maximum], curve.F_uN[after_maximum], CURVE_MARKERS[index % len(CURVE_MARKERS)],
+                markersize=2.4, color=shade, alpha=0.55, markeredgewidth=0, gid=f"{line.name}/{curve.name}/data")
         fitted = after_maximum & np.isfinite(curve.F_fit_uN)
         ax.plot(curve.t_s[fitted], curve.F_fit_uN[fitted], "-", color=shade, linewidth=1.4,
                 gid=f"{line.name}/{curve.name}/fit", label=_legend_text(curve))
     ok = sum(curve.status in FITTED for curve in line.relaxation)
     ax.set_xscale("log")
     ax.set_xlabel("t (s)")
-    ax.set_ylabel("F (uN)")
+    ax.set_ylabel(axis_label("F", "uN"))
     ax.set_title(f"{line.name}: {len(shown)} of {len(line.relaxation)} curves ({ok} fits ok)")
     ax.legend(loc="upper right", frameon=False, fontsize=6.5)
     ax.grid(alpha=0.3, which="major")
@@ -64,13 +66,12 @@ def relaxation_figure(results):
     if not lines:
         raise FigureSkipped("relaxation curves: results.h5 has no /lines/<line>/relaxation group "
                             "(campaigns built from raw relaxation curves have one)")
-    colors = line_colors(results.line_names())
     columns = min(3, len(lines))
     rows = math.ceil(len(lines) / columns)
     figure = new_figure(4.0 * columns, 3.2 * rows + 0.5)
     axes = figure.subplots(rows, columns, squeeze=False).ravel()
     for ax, line in zip(axes, lines):
-        _draw_line(ax, line, colors[line.name])
+        _draw_line(ax, line)
     for ax in axes[len(lines):]:
         ax.remove()
     figure.suptitle(f"{results.campaign_name}: force relaxation, measured (points) and "

@@ -2,6 +2,7 @@
 quantities get a log axis, one colour per plant line (the same in every figure), and the
 typography of a printed figure."""
 import functools
+import re
 
 import matplotlib
 from matplotlib.figure import Figure
@@ -43,8 +44,17 @@ RC = {
 }
 
 
+def typeset_unit(unit):
+    """A unit as a paper prints it: growthuq's files spell micro as "u" (ASCII) and a product with
+    a space; 'um/s' -> 'µm/s', 'uN' -> 'µN', 'MPa s' -> 'MPa·s'; '1' (a pure number) -> ''."""
+    if unit in ("1", ""):
+        return ""
+    return re.sub(r"\bu(?=[mNs]\b|m/)", "µ", unit).replace(" ", "·")
+
+
 def axis_label(quantity, unit):
-    """`p (MPa)`: the quantity's symbol as growthuq names it, with its unit."""
+    """`p (MPa)`, `v (µm/s)`: the quantity's symbol as growthuq names it, with its unit typeset."""
+    unit = typeset_unit(unit)
     return f"{quantity} ({unit})" if unit else quantity
 
 

@@ -60,7 +60,7 @@ def _quantity_panel(ax, rows, quantity, colors, markers, reference):
     ax.set_yscale("log")
     ax.set_xlabel("samples per line")
     ax.set_ylabel("error (% of reference)")
-    ax.set_title(f"{quantity} ({unit})" if unit else quantity)
+    ax.set_title(axis_label(quantity, unit))
     ax.grid(alpha=0.3, which="major")
     # Errors below 1e-4 % are rounding, not sampling (the reference line's v equals its
     # measured median by the kappa calibration): keep them from stretching the axis.

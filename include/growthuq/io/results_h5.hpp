@@ -16,6 +16,11 @@
 //                                  data_ci_low, data_ci_high (the data-uncertainty interval,
 //                                  NaN where no bootstrap ran) (float64; NaN where summary.csv
 //                                  has an empty cell); dimension summary_row
+//   /provenance/                   how the results were made (campaign/provenance.hpp): version,
+//                                  campaign path and SHA-256, seed, samples, instrument, data-
+//                                  interval settings (attributes); lines/<line> (fidelity, source,
+//                                  correlation) and models/<model> (description, reference,
+//                                  measured_error), string attributes
 //   /lines/<line>/                 one group per line (attributes `samples`, and `columns`: the
 //                                  column names in samples.csv's order, inputs then outputs)
 //     sample                       uint64 [samples], 0-based index of the sample in its line: the
@@ -50,6 +55,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "growthuq/evaluation/line_result.hpp"
@@ -109,9 +115,11 @@ class ResultsH5Writer {
                    const std::string& dimension);  // float64
   void write_array(const std::string& path, const std::vector<std::int32_t>& values, const std::string& unit,
                    const std::string& dimension);  // int32
-  // A string or float64 attribute on the group or dataset at `path` (created as a group if missing).
+  // A string, float64 or uint64 attribute on the group or dataset at `path` (created as a group
+  // if missing).
   void write_attribute(const std::string& path, const std::string& name, const std::string& value);
   void write_attribute(const std::string& path, const std::string& name, double value);
+  void write_attribute(const std::string& path, const std::string& name, std::uint64_t value);
 
   // Replaces the summaries of the lines written (the same rows, in the order written) in every
   // line's `summary` and for /summary: the data intervals (data_ci_low/high) of the bootstrap
@@ -128,6 +136,9 @@ class ResultsH5Writer {
   const std::string& path() const { return path_; }
 
  private:
+  void write_attribute_value(const std::string& path, const std::string& name,
+                             const std::variant<std::string, double, std::uint64_t>& value);
+
   struct File;
   std::string path_;
   Overwrite overwrite_;

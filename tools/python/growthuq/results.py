@@ -39,6 +39,10 @@ class Results:
     # no line had enough samples with status ok.
     sensitivity: pd.DataFrame = field(default_factory=pd.DataFrame)
     attrs: dict = field(default_factory=dict)  # root attributes: seed, kappa, samples_per_line, campaign_text, ...
+    # How the results were made (/provenance, campaigns/README.md): version, campaign and its
+    # SHA-256, seed, samples, instrument, data-interval settings, and `lines` and `models` as
+    # {name: {field: value}}; {} for results of a growthuq without it.
+    provenance: dict = field(default_factory=dict)
     report: str = ""            # stdout of the run, when the results come from growthuq.run
 
 
@@ -193,6 +197,18 @@ def load(results):
                            "expected an intact results.h5 of `growthuq run`: rerun the campaign") from None
 
 
+def _provenance(h5):
+    if "provenance" not in h5:
+        return {}
+    group = h5["provenance"]
+    found = {name: _plain(value) for name, value in group.attrs.items()}
+    for part in ("lines", "models"):
+        if part in group:
+            found[part] = {name: {key: _plain(value) for key, value in member.attrs.items()}
+                           for name, member in group[part].items()}
+    return found
+
+
 def _require(path, h5, name, what):
     """ResultsError naming the file and the missing object `name` (`what` it is)."""
     if name not in h5:
@@ -226,8 +242,9 @@ def _load_open(path, h5):
         comparisons = _root_table(h5, "line_comparisons", lines, ["line_a", "line_b"])
         letters = _root_table(h5, "line_letters", lines, ["line"])
         sensitivity = _root_table(h5, "sensitivity", lines, ["line"])
+        provenance = _provenance(h5)
     dataset = _combined([_line_dataset(path, line) for line in lines], lines)
     dataset.attrs = {name: value for name, value in attrs.items() if not isinstance(value, list)}
     return Results(path, lines, _samples_frame(dataset, lines), summary, correlations, fits, fit_parameters,
                    dataset, data_uncertainty=data_uncertainty, comparisons=comparisons, letters=letters,
-                   sensitivity=sensitivity, attrs=attrs)
+                   sensitivity=sensitivity, attrs=attrs, provenance=provenance)

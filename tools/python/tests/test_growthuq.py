@@ -5,8 +5,10 @@ reading results.h5 directly, and against pandas' own Spearman correlation; the C
 as Python exceptions; eval_tubes against the CLI's single-tube path.
 
 Run by CTest (tests/python/CMakeLists.txt) with GROWTHUQ_CLI set to the CLI just built:
-    GROWTHUQ_CLI=build/release/growthuq PYTHONPATH=tools/python /usr/bin/python3 -m unittest discover -s tools/python/tests
+    GROWTHUQ_CLI=$PWD/build/release/growthuq PYTHONPATH=tools/python /usr/bin/python3 -m unittest discover -s tools/python/tests
 """
+import hashlib
+import json
 import os
 import re
 import subprocess
@@ -181,6 +183,16 @@ class RunAndLoad(unittest.TestCase):
         assert_frame_is_csv(self, self.results.data_uncertainty, in_campaign_order(csv, self.results.lines))
         self.assertTrue(self.results.comparisons.empty)  # one line given by raw data: nothing to compare
         self.assertTrue(self.results.letters.empty)
+
+    def test_provenance_is_provenance_json_and_names_the_campaign_file(self):
+        stated = json.loads((self.out / "provenance.json").read_text())
+        provenance = self.results.provenance
+        for key in ("growthuq_version", "seed", "samples_per_line", "probe_radius_um", "campaign_sha256"):
+            self.assertEqual(provenance[key], stated[key], key)
+        self.assertEqual(provenance["campaign_sha256"], hashlib.sha256(self.campaign.read_bytes()).hexdigest())
+        self.assertEqual(provenance["samples_per_line"], SAMPLES)
+        self.assertEqual(sorted(provenance["lines"]), sorted(line["name"] for line in stated["lines"]))
+        self.assertIn("Arnoldi", provenance["models"]["thin_shell_turgor"]["reference"])
 
     def test_sensitivity_is_sensitivity_csv(self):
         read = pd.read_csv(self.out / "sensitivity.csv", float_precision="round_trip")
