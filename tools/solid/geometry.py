@@ -46,15 +46,16 @@ def wall_position(tube):
 
 
 def wall(mesh, tube, res):
-    """The tube's bricks (set WALL). Returns the grids theta, s, t (corners) and the element
-    index of the outer face per (theta cell, s cell), for the contact surfaces."""
+    """The tube's bricks (set WALL) and the apex's wedges (set APEX). Returns the grids theta,
+    s, t (corners), the WALL element of the outer face per (theta cell, s cell), for the contact
+    surfaces, and the WALL and APEX elements whose face 1 is the inner wall, for the turgor."""
     r0 = tube.d0 / 2
     apex = tube.length - r0 + np.pi * r0 / 2
     theta = graded(0.0, np.pi, 0.0, res.finest / r0, res.ratio, res.coarsest_angle)
     s = graded(0.0, apex, tube.z_probe, res.finest, res.ratio, res.coarsest_length)
     t = np.linspace(-tube.h0 / 2, tube.h0 / 2, res.layers + 1)
     position = wall_position(tube)
-    outer = block(mesh, "WALL", "wall", theta, s[:-1], t, position)
+    outer, inner = block(mesh, "WALL", "wall", theta, s[:-1], t, position)
     # The last ring: wedges with the apex as their third corner (the theta lines meet there).
     tt, th = with_midpoints(t), with_midpoints(theta)
     j = 2 * (len(s) - 2)
@@ -71,18 +72,21 @@ def wall(mesh, tube, res):
                      n(1, 0, 0), n(2, 1, 0), n(0, 1, 0), n(1, 0, 2), n(2, 1, 2), n(0, 1, 2),
                      n(0, 0, 1), n(2, 0, 1), pole(1)]
             mesh.add("APEX", "C3D15", nodes)
-    return theta, s, t, outer
+    apex_inner = [e for e in range(len(mesh.elements["APEX"])) if e % res.layers == 0]
+    return theta, s, t, outer, sorted(inner.values()), apex_inner
 
 
 def probe(mesh, centre, rho, cells):
-    """The probe's half facing -x as one layer of bricks (set PROBE), from 0.8 rho to rho,
-    graded towards the point it first touches; returns the outer face's element indices."""
-    psi = graded(0.3, np.pi - 0.3, np.pi / 2, np.pi / cells, 1.2, np.pi / 6)
-    omega = graded(np.pi / 2, 1.5 * np.pi, np.pi, np.pi / cells, 1.2, np.pi / 6)
+    """The probe's cap facing -x, 69 degrees around the point it first touches, as one layer of
+    bricks (set PROBE) from 0.8 rho to rho, graded towards that point; returns the outer face's
+    element indices. The contact patch at the window's top stays well inside it (the shell's
+    contact radius there is below 0.8 rho)."""
+    psi = graded(np.pi / 2 - 1.2, np.pi / 2 + 1.2, np.pi / 2, np.pi / cells, 1.2, np.pi / 8)
+    omega = graded(np.pi - 1.2, np.pi + 1.2, np.pi, np.pi / cells, 1.2, np.pi / 8)
 
     def position(a, b, r):  # (psi, omega, r) is right-handed: e_psi x e_omega = e_r
         return centre + r * np.array([np.sin(a) * np.cos(b), np.sin(a) * np.sin(b), np.cos(a)])
-    return block(mesh, "PROBE", "probe", psi, omega, np.array([0.8 * rho, rho]), position)
+    return block(mesh, "PROBE", "probe", psi, omega, np.array([0.8 * rho, rho]), position)[0]
 
 
 def plate(mesh, x_top, y_range, z_range, cells):
@@ -90,4 +94,4 @@ def plate(mesh, x_top, y_range, z_range, cells):
     y = np.linspace(*y_range, cells[0] + 1)
     z = np.linspace(*z_range, cells[1] + 1)
     x = np.array([x_top - 0.5, x_top])
-    return block(mesh, "PLATE", "plate", y, z, x, lambda a, b, c: np.array([c, a, b]), kind="C3D8")
+    return block(mesh, "PLATE", "plate", y, z, x, lambda a, b, c: np.array([c, a, b]), kind="C3D8")[0]

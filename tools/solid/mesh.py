@@ -63,12 +63,13 @@ BRICK8 = BRICK20[:8]
 def block(mesh, name, tag, u, v, w, position, kind="C3D20"):
     """A structured block over corner coordinates u, v, w (zeta = w: face 1 at w[0], face 2 at
     w[-1]); position(u, v, w) -> xyz must be right-handed in (u, v, w).
-    Returns the element grid's (iu, iv) -> element index within the set, for the outer faces."""
+    Returns the element grid's (iu, iv) -> element index within the set, for the faces at
+    w[-1] (outer) and at w[0] (inner)."""
     quadratic = kind == "C3D20"
     uu, vv, ww = (with_midpoints(a) for a in (u, v, w)) if quadratic else (u, v, w)
     step = 2 if quadratic else 1
     pattern = BRICK20 if quadratic else BRICK8
-    index = {}
+    outer, inner = {}, {}
     for a in range(len(u) - 1):
         for b in range(len(v) - 1):
             for c in range(len(w) - 1):
@@ -79,5 +80,7 @@ def block(mesh, name, tag, u, v, w, position, kind="C3D20"):
                     nodes.append(mesh.node((tag, i, j, k), position(uu[i], vv[j], ww[k])))
                 mesh.add(name, kind, nodes)
                 if c == len(w) - 2:
-                    index[(a, b)] = len(mesh.elements[name]) - 1
-    return index
+                    outer[(a, b)] = len(mesh.elements[name]) - 1
+                if c == 0:
+                    inner[(a, b)] = len(mesh.elements[name]) - 1
+    return outer, inner

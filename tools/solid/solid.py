@@ -41,11 +41,11 @@ def run_ccx(deck_base, threads=1):
     return time.monotonic() - start
 
 
-def simulate(case, res, contact, depth, folder, increments=50, clearance=0.05, probe_clearance=0.3):
+def simulate(case, res, contact, depth, folder, increments=50, clearance=0.3, probe_clearance=0.3):
     """Inflation, then the probe moved `depth` [um] past first touch in -x. The plate starts
     `clearance` um and the probe `probe_clearance` um clear of the far field's inflated wall
-    (far_field.py): ccx's surface-to-surface search held nearer probes in contact during the
-    inflation. The depth is counted from first touch, measured on the inflated wall. Returns a dict: turgid diameter d [um],
+    (far_field.py), so that nothing touches while the wall inflates. The depth is counted from
+    first touch, measured on the inflated wall. Returns a dict: turgid diameter d [um],
     depth and force curves [um, uN, whole tube], the window fit (k [N/m] over 0.4-4 uN), the
     node count and the run time [s]."""
     os.makedirs(folder, exist_ok=True)
@@ -58,7 +58,7 @@ def simulate(case, res, contact, depth, folder, increments=50, clearance=0.05, p
     z_ref = z_axis / axial
 
     mesh = Mesh()
-    theta, s, t, outer_faces = wall(mesh, Tube(case.d0, case.h0, case.length, z_ref), res)
+    theta, s, t, outer_faces, inner_wall, inner_apex = wall(mesh, Tube(case.d0, case.h0, case.length, z_ref), res)
     centre = np.array([outer_radius + probe_clearance + case.rho, 0.0, z_axis])
     probe_faces = probe(mesh, centre, case.rho, cells=res.probe_cells)
     reach = 2 * case.rho + 2 * case.h0 + depth + 0.5  # the patch the probe can touch
@@ -94,7 +94,8 @@ def simulate(case, res, contact, depth, folder, increments=50, clearance=0.05, p
     surfaces = [(("TUBETOP", top), ("PROBESURF", [(numbers["PROBE"][e], 2) for e in probe_faces.values()])),
                 (("TUBEBOTTOM", bottom), ("PLATESURF", [(numbers["PLATE"][e], 2) for e in plate_faces.values()]))]
     base = os.path.join(folder, "indent")
-    write(base + ".inp", mesh, sets, Wall(case.E, case.nu, case.p), case.h0, surfaces, contact,
+    pressed = [numbers["WALL"][e] for e in inner_wall] + [numbers["APEX"][e] for e in inner_apex]
+    write(base + ".inp", mesh, sets, Wall(case.E, case.nu, case.p), case.h0, pressed, surfaces, contact,
           probe_move=depth + probe_clearance, increments=increments, wall_element=res.element)
     seconds = run_ccx(base)
 
