@@ -7,10 +7,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from deck import Contact, Wall, element_ids, read_dat, write
+from deck import Wall, element_ids, write
 from far_field import stvk_stretches
 from geometry import Tube, plate, probe, wall
 from mesh import Mesh
+from results import read_run
 from window import fit_force_window
 
 
@@ -41,11 +42,11 @@ def run_ccx(deck_base, threads=1):
     return time.monotonic() - start
 
 
-def simulate(case, res, contact, depth, folder, increments=50, clearance=0.3, probe_clearance=0.3):
-    """Inflation, then the probe moved `depth` [um] past first touch in -x. The plate starts
+def simulate(case, res, contact, depth, folder, increments=16, clearance=0.0, probe_clearance=0.02):
+    """Inflation, then the probe moved `depth` [um] past first touch in -x. The plate is placed
     `clearance` um and the probe `probe_clearance` um clear of the far field's inflated wall
-    (far_field.py), so that nothing touches while the wall inflates. The depth is counted from
-    first touch, measured on the inflated wall. Returns a dict: turgid diameter d [um],
+    (far_field.py): the plate touching it, as the shell's plane touches its lowest node. The
+    depth is counted from first touch, measured on the inflated wall. Returns a dict: turgid diameter d [um],
     depth and force curves [um, uN, whole tube], the window fit (k [N/m] over 0.4-4 uN), the
     node count and the run time [s]."""
     os.makedirs(folder, exist_ok=True)
@@ -99,19 +100,7 @@ def simulate(case, res, contact, depth, folder, increments=50, clearance=0.3, pr
           probe_move=depth + probe_clearance, increments=increments, wall_element=res.element)
     seconds = run_ccx(base)
 
-    blocks = read_dat(base + ".dat")
-    inflated = [b for b in blocks if b[0] == "displacements" and b[2] <= 1.0 + 1e-9]
-    u = {int(row[0]): row[1:4] for row in inflated[-1][3]}
-    x = {n: mesh.coordinates[n - 1] + u[n] for n in u}
-    d = 2 * float(np.mean([np.hypot(x[n][0], x[n][1]) for n in sets["MIDRING"]]))
-    lateral = [(x[n], x[n][1] ** 2 + (x[n][2] - z_axis) ** 2) for n in sets["UNDER"]]
-    touch = max(v[0] + np.sqrt(case.rho ** 2 - l2) for v, l2 in lateral if l2 < case.rho ** 2)
-    gap = centre[0] - touch
-    curve = [(b[2] - 1.0, -b[3][0][0]) for b in blocks if b[1] == "PROBEN"]  # total time; step 2
-    depths = np.concatenate([[0.0], np.array([c[0] for c in curve]) * depth - gap])
-    forces = np.concatenate([[0.0], 2.0 * np.array([c[1] for c in curve])])  # half model: doubled
-    keep = depths >= 0  # the approach, before first touch
-    depths, forces = np.concatenate([[0.0], depths[keep]]), np.concatenate([[0.0], forces[keep]])
+    d, depths, forces = read_run(base, case.rho)
     fit = fit_force_window(depths, forces, 0.4, 4.0)
-    return {"d": d, "depth": depths, "force": forces, "fit": fit, "gap": gap,
+    return {"d": d, "depth": depths, "force": forces, "fit": fit,
             "nodes": len(mesh.coordinates), "seconds": seconds}
