@@ -23,6 +23,7 @@ class Wall:
 class Contact:
     method: str = "NODE TO SURFACE"      # or "SURFACE TO SURFACE"
     stiffness: float = 100.0             # penalty slope K in units of E / h0 (pressure per overclosure)
+    probe_slave: bool = False            # the probe's nodes slave to the wall's faces (solid.py)
 
 
 def _lines(ids, per_line=12):

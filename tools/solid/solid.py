@@ -92,7 +92,11 @@ def simulate(case, res, contact, depth, folder, increments=16, clearance=0.0, pr
            if centre_of(a, b)[0] < reach and abs(centre_of(a, b)[1] - z_ref) < reach]
     bottom = [(numbers["WALL"][e], 2) for (a, b), e in outer_faces.items()
               if theta[a] > 0.75 * np.pi and abs(centre_of(a, b)[1] - z_ref) < 4 * case.d0]
-    surfaces = [(("TUBETOP", top), ("PROBESURF", [(numbers["PROBE"][e], 2) for e in probe_faces.values()])),
+    probe_surface = ("PROBESURF", [(numbers["PROBE"][e], 2) for e in probe_faces.values()])
+    # The wall's faces are the slaves; the probe's nodes as slaves (probe_slave) stalled at the
+    # first touch (ccx 2.20, node to surface).
+    top_pair = (probe_surface, ("TUBETOP", top)) if contact.probe_slave else (("TUBETOP", top), probe_surface)
+    surfaces = [top_pair,
                 (("TUBEBOTTOM", bottom), ("PLATESURF", [(numbers["PLATE"][e], 2) for e in plate_faces.values()]))]
     base = os.path.join(folder, "indent")
     pressed = [numbers["WALL"][e] for e in inner_wall] + [numbers["APEX"][e] for e in inner_apex]
