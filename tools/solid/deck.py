@@ -24,6 +24,7 @@ class Contact:
     method: str = "NODE TO SURFACE"      # or "SURFACE TO SURFACE"
     stiffness: float = 100.0             # penalty slope K in units of E / h0 (pressure per overclosure)
     probe_slave: bool = False            # the probe's nodes slave to the wall's faces (solid.py)
+    tension: float = 2.5e-3              # node to surface: sigma_inf in units of E
 
 
 def _lines(ids, per_line=12):
@@ -71,8 +72,9 @@ def write(path, mesh, node_sets, wall, h0, pressed, surfaces, contact, probe_mov
         out += [f"*CONTACT PAIR, INTERACTION=FRICTIONLESS, TYPE={contact.method}", f"{slave[0]}, {master[0]}"]
     slope = contact.stiffness * wall.E / h0
     out += ["*SURFACE INTERACTION, NAME=FRICTIONLESS", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR",
-                # K; the tension at large clearance (node to surface only) 1e-6 of E; c0 not used.
-            f"{slope:.6g}, {1e-6 * wall.E:.6g}"]
+                # K; the tension at large clearance (node to surface only), a small fraction of the
+                # contact pressure under the probe (of order E); 1e-6 E was tried first (README).
+            f"{slope:.6g}, {contact.tension * wall.E:.6g}"]
     out += ["*BOUNDARY", "MIRROR, 2, 2", "END, 1, 3", "PROBEN, 1, 3", "PLATEN, 1, 3"]
     out += ["*STEP, NLGEOM, INC=1000", "*STATIC", "0.25, 1.0, 1e-4, 0.5", "*DLOAD"]
     out += [f"{e}, P1, {wall.p:.10g}" for e in pressed]
