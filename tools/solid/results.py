@@ -1,0 +1,46 @@
+"""A ccx run of the experiment read back from its files (deck.py's .inp and ccx's .dat), so a run
+can be read while it goes on or after it: the turgid diameter at the end of the inflation, and
+the force curve of the indentation from first touch (whole tube: the half model's doubled)."""
+import numpy as np
+
+from deck import read_dat
+
+
+def _inp(path):
+    """Node coordinates, node sets and the probe's prescribed move of a deck.py deck."""
+    nodes, sets, move, section, name = {}, {}, None, None, None
+    for line in open(path):
+        if line.startswith("*"):
+            words = [w.strip() for w in line.split(",")]
+            section = words[0].upper()
+            name = words[1].split("=")[1] if section == "*NSET" else None
+            continue
+        values = [v for v in line.replace(",", " ").split()]
+        if section == "*NODE":
+            nodes[int(values[0])] = np.array([float(v) for v in values[1:4]])
+        elif section == "*NSET":
+            sets.setdefault(name, []).extend(int(v) for v in values)
+        elif section == "*BOUNDARY" and values[0] == "PROBEN" and len(values) == 4:
+            move = -float(values[3])
+    return nodes, sets, move
+
+
+def read_run(base, rho):
+    """d [um], depth [um] and force [uN] arrays (from first touch) of the run `base`.inp/.dat."""
+    nodes, sets, move = _inp(base + ".inp")
+    blocks = read_dat(base + ".dat")
+    inflated = [b for b in blocks if b[0] == "displacements" and b[2] <= 1.0 + 1e-9][-1]
+    x = {int(row[0]): nodes[int(row[0])] + row[1:4] for row in inflated[3]}
+    d = 2 * float(np.mean([np.hypot(x[n][0], x[n][1]) for n in sets["MIDRING"]]))
+    probe = np.array([nodes[n] for n in sets["PROBEN"]])
+    # The probe's cap is centred on its frontmost node, which lies on the probe's axis.
+    front = probe[np.argmin(probe[:, 0])]
+    centre = front + np.array([rho, 0.0, 0.0])
+    lateral = [(x[n], x[n][1] ** 2 + (x[n][2] - centre[2]) ** 2) for n in sets["UNDER"]]
+    touch = max(v[0] + np.sqrt(rho ** 2 - l2) for v, l2 in lateral if l2 < rho ** 2)
+    gap = centre[0] - touch
+    curve = [(b[2] - 1.0, -b[3][0][0]) for b in blocks if b[1] == "PROBEN"]  # total time; step 2
+    depth = np.array([c[0] for c in curve]) * move - gap
+    force = 2.0 * np.array([c[1] for c in curve])  # the half model's force, doubled
+    keep = depth > 0  # the approach before first touch carries no force
+    return d, np.concatenate([[0.0], depth[keep]]), np.concatenate([[0.0], force[keep]])
