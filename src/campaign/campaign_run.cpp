@@ -34,10 +34,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-bool contains(const std::vector<std::string>& names, std::string_view name) {
-  return std::find(names.begin(), names.end(), name) != names.end();
-}
-
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // A line's LineResult without values: its name and columns (inputs in their line-file unit,
@@ -208,7 +204,7 @@ class LineRun {
       const bool by_strata = c < design->ranks.size() && design->strictly_increasing[c] != 0;
       ColumnStatistics column = column_statistics(
           layout.columns[c], values[c], by_strata ? std::span<const std::uint32_t>(design->ranks[c]) : std::span<const std::uint32_t>{},
-          *used, contains(campaign_.campaign().outputs, layout.columns[c].quantity));
+          *used, std::ranges::count(campaign_.campaign().outputs, layout.columns[c].quantity) > 0);
       if (pool_.is_coordinator()) {
         (*statistics)[c] = std::move(column);
       } else {
