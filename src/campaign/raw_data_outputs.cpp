@@ -83,6 +83,11 @@ void write_fits(ResultsH5Writer& h5, const std::string& line, const RawLineFit& 
   h5.write_table(group + "fit_candidates",
                  {c_variable, c_family, c_status, c_parameters, c_n, c_log_likelihood, c_aic, c_delta, c_ks, c_ad, c_reason});
   write_fit_parameters(h5, group, fit);
+  // The values each law was fitted to (one per tube, or per relaxation curve for tau and einf): what a
+  // figure draws as the line's measured tubes beside its samples.
+  for (const VariableFit& v : fit.variables) {
+    h5.write_array(group + "fit_data/" + v.variable, v.values, std::string(v.unit->symbol), "tube");
+  }
 }
 
 void write_relaxation(ResultsH5Writer& h5, const std::string& line, const RawLineFit& fit) {

@@ -40,6 +40,14 @@ with h5py.File(results + "/results.h5", "r") as f:
             expect(row["n"] == counts[name], "n of " + name)
         expect(abs(row["aic"] - (4 - 2 * row["log_likelihood"])) < 1e-9 * abs(row["aic"]), "AIC = 2k - 2 logL for " + name)
         expect(0 < row["ks"] < 1 and row["ad"] > 0, "KS and AD of " + name)
+    # The values each law was fitted to are the raw files' cells, in the files' order and unit.
+    for name, file, column in [("k", "indentation.csv", "k_N_per_m"), ("h", "tem_sections.csv", "h_nm"),
+                               ("v_exp", "growth.csv", "v_exp_um_per_s")]:
+        stored = wt["fit_data/" + name]
+        expect(np.allclose(stored[:], [float(r[column]) for r in table(raw + "/" + file)], rtol=1e-14, atol=0),
+               "fit_data of " + name)
+        expect(text(stored.attrs["units"]) == text(fits[variables.index(name)]["unit"]), "fit_data unit of " + name)
+    expect(len(wt["fit_data/tau"]) == fits[variables.index("tau")]["n"], "fit_data of tau: one per fitted curve")
     candidates = wt["fit_candidates"][:]
     for name in variables:
         rows = candidates[[text(v) == name for v in candidates["variable"]]]

@@ -45,6 +45,11 @@ TYPESET = {"MPa": "MPa", "MPa s": "MPa·s", "um/s": "µm/s", "um": "µm", "N/m":
            "%": "%", "frac": "frac"}
 
 
+def display(line):
+    """A line's name as the figures print it: "xxt1 xxt2", not the identifier xxt1_xxt2."""
+    return line.replace("_", " ")
+
+
 def close(a, b, tolerance=TOLERANCE):
     return np.allclose(np.asarray(a, dtype=float), np.asarray(b, dtype=float), rtol=tolerance, atol=0)
 
@@ -310,7 +315,7 @@ class BoxPlots(unittest.TestCase):
             self.assertEqual(unit, reference.unit(reference.lines[0], quantity))
             boxes = [p for p in ax.patches if (p.get_gid() or "").endswith("/box")]
             self.assertEqual(len(boxes), len(reference.lines))
-            self.assertEqual([t.get_text() for t in ax.get_xticklabels()], reference.lines)
+            self.assertEqual([t.get_text() for t in ax.get_xticklabels()], [display(l) for l in reference.lines])
             self.assertEqual(ax.get_yscale(), "log" if quantity in ("E", "eta") else "linear")
             self.assertEqual(ax.get_title().endswith(" (log scale)"), quantity in ("E", "eta"), quantity)
 
@@ -322,11 +327,10 @@ class BoxPlots(unittest.TestCase):
                 expected = percentiles(values)
                 key = f"{line}/{quantity}"
                 assert_box(self, self.figure, key, expected, position)
+                # Under the box the samples it leaves out; it holds the other of the 200 per line.
                 label = one(self.figure, f"{key}/n").get_text()
-                self.assertEqual(int(re.match(r"(\d+) samples", label).group(1)), values.size, key)
-                self.assertNotIn("tubes", label, key)  # lines given by line files: tubes unknown
                 flagged = 200 - values.size
-                self.assertEqual(f"{flagged} flagged" in label, flagged > 0, key)
+                self.assertEqual(label, f"{flagged} flagged" if flagged else "", key)
                 # The same numbers as the engine's summary (summary.csv, /summary in results.h5).
                 row = reference.summary[line, quantity]
                 self.assertEqual(int(row["n"]), values.size)
@@ -341,7 +345,7 @@ class BoxPlots(unittest.TestCase):
         # One title line naming the quantities; what the boxes mean is the caption's (captions.py).
         self.assertEqual(self.figure._suptitle.get_text(),
                          f"{Shared.results.campaign_name}: turgor pressure, wall modulus, wall viscosity, "
-                         "growth rate (predicted) per line")
+                         "growth rate (predicted) per line, 200 samples each")
 
 
 class DataIntervals(unittest.TestCase):
@@ -354,6 +358,7 @@ class DataIntervals(unittest.TestCase):
     def setUpClass(cls):
         text = (SOURCE / "tests" / "campaign" / "data" / "raw_campaign.ini").read_text()
         text = text.replace("= ../../../", f"= {SOURCE}/")
+        text = re.sub(r"(?m)^outputs\s*=.*$", "outputs = p, E, eta, v, v_exp", text)
         campaign = Shared.tmp / "raw_campaign.ini"
         campaign.write_text(text)
         out = Shared.tmp / "raw"
@@ -365,6 +370,38 @@ class DataIntervals(unittest.TestCase):
             cls.tubes = [int(n) for n in h5["lines/wild_type/fits"]["n"]]
         cls.results = PLOTTING.results.read_results(out / "results.h5")
         cls.figure = PLOTTING.boxes.box_figure(cls.results)
+        cls.growth = PLOTTING.growth_rate.growth_rate_figure(cls.results)
+
+    def test_the_growth_rate_shows_the_measured_tubes_and_the_data_intervals(self):
+        # The tubes: the raw file's cells, read here with the csv module (not through results.h5).
+        with open(SOURCE / "distributions" / "example_raw" / "wild_type" / "growth.csv", newline="") as handle:
+            tubes = [float(row["v_exp_um_per_s"])
+                     for row in csv.DictReader(text for text in handle if not text.startswith("#"))]
+        points = one(self.growth, "wild_type/v_exp/tubes").get_offsets()
+        self.assertEqual(len(points), len(tubes))
+        self.assertTrue(close(points[:, 1], tubes))
+        self.assertTrue(np.all(np.abs(points[:, 0] - (0 - 0.2)) <= 0.12 + 1e-12))
+        self.assertGreater(len(set(np.round(points[:, 0], 9))), len(tubes) // 2)  # spread, not one column
+        self.assertEqual(one(self.growth, "wild_type/growth/n").get_text(),
+                         f"{len(tubes)} tubes\n{self.reference.counted('wild_type', 'v').size} samples")
+        # pme48 comes from a line file: no tubes, a box of draws from its law.
+        self.assertEqual(gid_artists(self.growth, r"pme48/v_exp/tubes"), [])
+        assert_box(self, self.growth, "pme48/v_exp", percentiles(self.reference.counted("pme48", "v_exp")), 1 - 0.2)
+        self.assertTrue(one(self.growth, "pme48/growth/n").get_text().startswith(
+            f"{self.reference.counted('pme48', 'v_exp').size} draws\n"))
+        for position, line in enumerate(self.reference.lines):
+            for quantity, offset, bar in (("v_exp", -0.2, "v_exp_range"), ("v", 0.2, "v_range")):
+                row = self.reference.summary[line, quantity]
+                low, high = float(row["data_ci_low"]), float(row["data_ci_high"])
+                self.assertTrue(low <= float(row["median"]) <= high and low < high, (line, quantity))
+                (segment,) = one(self.growth, f"{line}/{quantity}/data_interval").get_segments()
+                self.assertTrue(close(segment[:, 0], [position + offset] * 2, 1e-9), (line, quantity))
+                self.assertTrue(close(sorted(segment[:, 1]), [low, high]), (line, quantity))
+                # The medians' panel: the same intervals as bars.
+                (drawn,) = one(self.growth, f"{line}/{bar}").get_segments()
+                along = 0 if quantity == "v_exp" else 1
+                self.assertTrue(close(sorted(drawn[:, along]), [low, high]), (line, quantity))
+        self.assertEqual(self.growth.axes[1].get_title(), "medians\nbars: 95 % data intervals")
 
     def test_an_error_bar_on_each_median_spans_its_data_interval(self):
         reference = self.reference
@@ -382,17 +419,19 @@ class DataIntervals(unittest.TestCase):
                          ["median's 95 % data interval (bootstrap over tubes)"])
         caption = PLOTTING.boxes.box_caption(self.results)
         self.assertIn("Black bar: the median's 95 % data interval", caption)
-        self.assertIn("the tubes behind a raw-data line's laws", caption)
+        self.assertIn("Under a raw-data line's name: the tubes behind its laws", caption)
 
-    def test_the_count_under_a_box_says_samples_and_for_raw_data_the_tubes(self):
+    def test_the_tubes_under_a_raw_data_lines_name_and_the_flagged_under_each_box(self):
         fewest, most = min(self.tubes), max(self.tubes)
         self.assertLess(fewest, most)
+        for ax in self.figure.axes[:4]:
+            self.assertEqual([t.get_text() for t in ax.get_xticklabels()],
+                             [f"wild type\n{fewest}-{most} tubes", "pme48"])
         for line in self.reference.lines:
             for quantity in EXPECTED_UNITS:
                 label = one(self.figure, f"{line}/{quantity}/n").get_text()
-                counted = self.reference.counted(line, quantity).size
-                self.assertTrue(label.startswith(f"{counted} samples"), label)
-                self.assertEqual(f"{fewest}-{most} tubes" in label, line == "wild_type", (line, label))
+                flagged = 300 - self.reference.counted(line, quantity).size
+                self.assertEqual(label, f"{flagged} flagged" if flagged else "", (line, quantity))
 
 
 class Letters(unittest.TestCase):
@@ -490,6 +529,8 @@ class GrowthRate(unittest.TestCase):
         cls.figure = PLOTTING.growth_rate.growth_rate_figure(Shared.results)
 
     def test_medians_and_10_90_ranges_of_measured_and_predicted_rates(self):
+        # Line files only and no bootstrap: the measured side is draws from each v_exp law (no
+        # tubes), and the bars are the 10-90 % ranges (no data interval to draw).
         reference = Shared.reference
         for line in reference.lines:
             measured = percentiles(reference.counted(line, "v_exp"))
@@ -508,18 +549,22 @@ class GrowthRate(unittest.TestCase):
             self.assertEqual(one(self.figure, f"{line}/growth/n").get_text(),
                              f"{reference.counted(line, 'v_exp').size} draws\n"
                              f"{reference.counted(line, 'v').size} samples")
-        self.assertIn("draws from the fitted v_exp law", self.figure.axes[0].get_title())
+        self.assertEqual(gid_artists(self.figure, r".*/(tubes|data_interval)"), [])
+        self.assertEqual(self.figure.axes[1].get_title(), "medians\nbars: 10-90 % ranges")
 
-    def test_labels_units_and_the_calibration_note(self):
+    def test_labels_units_and_the_calibration_note_in_the_caption(self):
         boxes, scatter = self.figure.axes[:2]
         self.assertEqual(boxes.get_ylabel(), "v (µm/s)")
         self.assertEqual(scatter.get_xlabel(), "measured v_exp (µm/s)")
         self.assertEqual(scatter.get_ylabel(), "predicted v (µm/s)")
+        self.assertEqual([t.get_text() for t in boxes.get_xticklabels()], [display(l) for l in Shared.reference.lines])
         drawn = [p for p in boxes.patches if p.get_gid().endswith("/box")]
         self.assertEqual(len(drawn), 2 * len(Shared.reference.lines))
-        title = self.figure._suptitle.get_text()
-        self.assertIn(f"kappa = {Shared.reference.kappa:.4g} is calibrated on wild_type", title)
-        self.assertIn("by construction", title)
+        self.assertEqual(self.figure._suptitle.get_text(), "quick: growth rate, measured and predicted")
+        caption = PLOTTING.captions.caption("growth_rate", Shared.results)
+        self.assertIn(f"kappa = {Shared.reference.kappa:.4g} is calibrated on wild type", caption)
+        self.assertIn("by construction", caption)
+        self.assertIn("hatched box: draws from a line file's v_exp law", caption)
         one_to_one = one(self.figure, "one_to_one")
         self.assertTrue(np.array_equal(one_to_one.get_xdata(), one_to_one.get_ydata()))
 
@@ -550,7 +595,7 @@ class YieldPressure(unittest.TestCase):
             ok = int((reference.status[line] == "ok").sum())
             for quantity, n in (("p", ok + no_growth[line]), ("eta", ok + no_growth[line]), ("v", ok + no_growth[line])):
                 label = one(boxes, f"{line}/{quantity}/n").get_text()
-                self.assertEqual(int(re.match(r"(\d+) samples", label).group(1)), n, (line, quantity))
+                self.assertEqual(label, f"{200 - n} flagged" if n < 200 else "", (line, quantity))
             v = reference.counted(line, "v")
             self.assertEqual(int((v == 0).sum()), no_growth[line])
             expected = percentiles(v)
@@ -599,7 +644,7 @@ class Correlogram(unittest.TestCase):
         y_ticks = {i: [t for t in ax.texts if t.get_gid() == f"ytick/{i}"] for i in range(k)}
         for j, name in enumerate(names):
             attrs = reference.attrs[line, name]
-            label = f"{attrs['quantity']} ({TYPESET[attrs['unit']]})"
+            label = f"{attrs['quantity']}\n({TYPESET[attrs['unit']]})"  # the unit under the symbol
             self.assertEqual(one(figure, f"xlabel/{j}").get_text(), label)
             self.assertEqual(one(figure, f"ylabel/{j}").get_text(), label)
         for i, row_name in enumerate(names):
@@ -815,44 +860,89 @@ class RelaxationAndTrade(unittest.TestCase):
             fitted_labels = [t.get_text() for t in ax.get_legend().get_texts() if "tau" in t.get_text()]
             self.assertTrue(fitted_labels and all("tau fast" in t and ", slow " in t for t in fitted_labels))
 
-    def test_trade_panels_show_errors_ci_and_time_against_samples(self):
+    def test_trade_panels_show_ci_half_widths_median_errors_the_target_and_time(self):
         rows = PLOTTING.tradeoff_data.read_tradeoff(self.directory / "tradeoff.csv")
-        figure = PLOTTING.tradeoff.tradeoff_figure(rows, "quick", Shared.reference.lines)
+        figure = PLOTTING.tradeoff.tradeoff_figure(rows, "quick", Shared.reference.lines, target_pct=2.5)
         panels = figure.axes
-        quantities = [("p", "MPa"), ("E", "MPa"), ("eta", "MPa s"), ("v", "um/s"), ("v_exp", "um/s")]
+        quantities = ["p", "E", "eta", "v", "v_exp"]
+        long = ["turgor pressure", "wall modulus", "wall viscosity", "growth rate (predicted)",
+                "growth rate (measured)"]
+        # A percentage axis is labelled as one, not with the quantity's unit.
         self.assertEqual([ax.get_title() for ax in panels],
-                         [f"{q} ({TYPESET[unit]})" for q, unit in quantities] + ["time of the run (all lines)"])
+                         [f"{q}: {name}" for q, name in zip(quantities, long)] + ["time of the run (all lines)"])
         for ax in panels:
             self.assertEqual((ax.get_xscale(), ax.get_yscale()), ("log", "log"))
             self.assertEqual(ax.get_xlabel(), "samples per line")
-        self.assertEqual(panels[0].get_ylabel(), "error (% of reference)")
+        self.assertEqual({ax.get_ylabel() for ax in panels[:-1]}, {"% of the median"})
         self.assertEqual(panels[-1].get_ylabel(), "wall time (s)")
-        legend_labels = [t.get_text() for legend in figure.findobj(Legend) for t in legend.get_texts()]
-        for label in list(Shared.reference.lines) + ["|median error|", "|IQR error|",
-                                                     "95 % CI half-width of the median"]:
-            self.assertIn(label, legend_labels)
+        legend = one(figure, "trade_legend")
+        self.assertEqual([t.get_text() for t in legend.get_texts()],
+                         [display(l) for l in Shared.reference.lines]
+                         + ["95 % CI half-width of the median", "|median error| against the largest run",
+                            "target 2.5 %"])
+        # One coloured line per plant line (and only the CI half-widths are lines): 5 per panel.
+        for ax, quantity in zip(panels, quantities):
+            ci_lines = [l for l in ax.lines if l.get_gid().endswith("/ci")]
+            self.assertEqual(len(ci_lines), len(Shared.reference.lines))
+            colours = {mcolors.to_hex(l.get_color()) for l in ci_lines}
+            self.assertEqual(len(colours), len(ci_lines))
+            self.assertTrue(all(l.get_linestyle() == "None" for l in ax.lines if l.get_gid().endswith("/median")))
+            target = one(figure, f"{quantity}/target")
+            self.assertTrue(close(target.get_ydata(), [2.5, 2.5]))
         reference = max(TRADE_COUNTS)
         for line in Shared.reference.lines:
-            for quantity, _ in quantities:
-                mine = [r for r in self.trade if r["line"] == line and r["quantity"] == quantity
-                        and r["samples"] < reference]
-                self.assertEqual([r["samples"] for r in mine], list(TRADE_COUNTS[:-1]))
-                samples = [r["samples"] for r in mine]
-                for series, expected in (
-                        ("median", [abs(r["median_error_pct"]) for r in mine]),
-                        ("iqr", [abs(r["iqr_error_pct"]) for r in mine]),
-                        ("ci", [100 * (r["median_ci_high"] - r["median_ci_low"]) / 2
-                                / abs(r["reference_median"]) for r in mine])):
-                    # A log axis cannot show 0: an error of exactly 0 (the reference line's v
-                    # equals its measured median by the kappa calibration) is not drawn.
-                    shown = [(n, e) for n, e in zip(samples, expected) if math.isfinite(e) and e > 0]
-                    drawn = one(figure, f"closed_form/{line}/{quantity}/{series}")
-                    self.assertTrue(close(drawn.get_xdata(), [n for n, _ in shown]), (line, quantity, series))
-                    self.assertTrue(close(drawn.get_ydata(), [e for _, e in shown], 1e-9), (line, quantity, series))
+            for quantity in quantities:
+                mine = [r for r in self.trade if r["line"] == line and r["quantity"] == quantity]
+                self.assertEqual([r["samples"] for r in mine], list(TRADE_COUNTS))
+                widths = [100 * (r["median_ci_high"] - r["median_ci_low"]) / 2 / abs(r["reference_median"])
+                          for r in mine]
+                drawn = one(figure, f"closed_form/{line}/{quantity}/ci")
+                self.assertTrue(close(drawn.get_xdata(), TRADE_COUNTS), (line, quantity))
+                self.assertTrue(close(drawn.get_ydata(), widths, 1e-9), (line, quantity))
+                # The measured errors, the reference run excluded; a log axis cannot show an error
+                # of exactly 0 (the reference line's v equals its measured median by the calibration).
+                shown = [(r["samples"], abs(r["median_error_pct"])) for r in mine
+                         if r["samples"] < reference and abs(r["median_error_pct"]) > 0]
+                drawn = one(figure, f"closed_form/{line}/{quantity}/median")
+                self.assertTrue(close(drawn.get_xdata(), [n for n, _ in shown]), (line, quantity))
+                self.assertTrue(close(drawn.get_ydata(), [e for _, e in shown], 1e-9), (line, quantity))
         seconds = one(figure, "closed_form/seconds")
         by_count = {r["samples"]: r["seconds"] for r in self.trade}
         self.assertTrue(close(seconds.get_xdata(), list(TRADE_COUNTS)))
         self.assertTrue(close(seconds.get_ydata(), [by_count[n] for n in TRADE_COUNTS]))
+
+    def test_the_trade_plot_fits_the_page_with_text_of_6_5_pt_or_more(self):
+        rows = PLOTTING.tradeoff_data.read_tradeoff(self.directory / "tradeoff.csv")
+        assert_print_size(self, PLOTTING.tradeoff.tradeoff_figure(rows, "quick", Shared.reference.lines), "tradeoff")
+
+    def test_the_target_option_of_the_command(self):
+        drawn = plot_command(self.directory, "--figures", "tradeoff", "--formats", "png", "--target", "0.5%",
+                             "--out", self.directory / "target")
+        self.assertEqual(drawn.returncode, 0, drawn.stderr)
+        assert_valid_png(self, self.directory / "target" / "tradeoff.png")
+        user_error(self, plot_command(self.directory, "--target", "-1"), "'-1'", "expected a percentage > 0")
+
+
+def assert_print_size(test, figure, name):
+    """Readable at print size: the figure fits a journal page's text width (18 cm) and no text in it
+    is smaller than 6.5 pt at that size (matplotlib sizes fonts in points of the figure as saved, so
+    a figure printed at its own width prints them at that size)."""
+    test.assertLessEqual(figure.get_figwidth(), 7.09, name)
+    FigureCanvasAgg(figure)
+    figure.draw_without_rendering()
+    texts = [t for t in figure.findobj(lambda a: hasattr(a, "get_fontsize") and hasattr(a, "get_text"))
+             if t.get_visible() and t.get_text().strip()]
+    test.assertGreater(len(texts), 10, name)
+    small = sorted({(t.get_fontsize(), t.get_text()) for t in texts if t.get_fontsize() < 6.5})
+    test.assertEqual(small, [], name)
+
+
+class PrintSize(unittest.TestCase):
+
+    def test_growth_rate_and_correlogram_fit_the_page_with_text_of_6_5_pt_or_more(self):
+        assert_print_size(self, PLOTTING.growth_rate.growth_rate_figure(Shared.results), "growth_rate")
+        for line in Shared.results.lines:
+            assert_print_size(self, PLOTTING.correlogram.correlogram_figure(Shared.results, line), line.name)
 
 
 if __name__ == "__main__":
@@ -864,6 +954,7 @@ if __name__ == "__main__":
     sys.dont_write_bytecode = True
     sys.path.insert(0, str(SOURCE / "tools"))
     import plotting.boxes
+    import plotting.captions
     import plotting.correlogram
     import plotting.growth_rate
     import plotting.pca

@@ -29,9 +29,9 @@ def label_below(ax, position, text, key):
     pushed down to make room, see room_for_labels)."""
     along_x = transforms.blended_transform_factory(ax.transData, ax.transAxes)
     return ax.text(position, -0.02, text, transform=along_x, ha="center", va="top",
-                   fontsize=7, color="0.25", gid=f"{key}/n")
+                   fontsize=6.5, color="0.25", gid=f"{key}/n")
 
 
 def room_for_labels(ax, text_lines):
     """Moves the x tick labels below `text_lines` lines of label_below text."""
-    ax.tick_params(axis="x", pad=4 + 9 * text_lines)
+    ax.tick_params(axis="x", pad=4 + 8.5 * text_lines)

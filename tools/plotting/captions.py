@@ -2,11 +2,9 @@
 not in it): tools/plot writes them to captions.md beside the plots, `growthuq report` under each
 embedded figure."""
 from .boxes import box_caption
+from .growth_rate import growth_rate_caption
 
 FIXED = {
-    "growth_rate": "Predicted against measured growth rate per line: hatched boxes are draws from the line's "
-                   "fitted v_exp law (not its tubes), filled ones the predicted v of its samples; kappa is "
-                   "calibrated on the reference line, which therefore agrees by construction.",
     "correlogram": "Inputs and outputs of one line (samples with status ok): histograms on the diagonal, scatter "
                    "below (first 2000 samples), Spearman coefficients above.",
     "sensitivity": "First-order sensitivity S = Var(E[output | input]) / Var(output) of every input for every "
@@ -24,6 +22,8 @@ def caption(stem, results):
     """The caption of the figure saved as `stem` (a family name, or family_<line>)."""
     if stem == "boxes":
         return box_caption(results)
+    if stem == "growth_rate":
+        return growth_rate_caption(results)
     family = next((name for name in FIXED if stem == name or stem.startswith(name + "_")), None)
     return FIXED.get(family, "")
 

@@ -3,6 +3,7 @@
 format into RESULTS_DIR/plots (or --out), prints what it wrote and why a figure was skipped. Bad
 input stops with one line naming the file and what was expected, exit status 2."""
 import argparse
+import math
 import re
 import sys
 from pathlib import Path
@@ -21,7 +22,7 @@ def _file_stem(text):
     return re.sub(r"[^\w.-]", "_", text)
 
 
-def _builders(results, results_dir, notes):
+def _builders(results, results_dir, notes, target_pct):
     """{family: a function returning [(file stem, Figure)]}. The figure modules (matplotlib and
     scipy, about 1 s to import) are imported here, once the results have been read, so that a
     wrong path or file is reported at once."""
@@ -50,7 +51,7 @@ def _builders(results, results_dir, notes):
         if not path.is_file():
             raise FigureSkipped(f"trade plot: no {path} (written by `growthuq tradeoff`)")
         return [("tradeoff", tradeoff_figure(read_tradeoff(path), results.campaign_name,
-                                             results.line_names()))]
+                                             results.line_names(), target_pct))]
 
     return {
         "boxes": lambda: [("boxes", box_figure(results))],
@@ -63,10 +64,10 @@ def _builders(results, results_dir, notes):
     }
 
 
-def build_figures(results, results_dir, wanted, notes):
+def build_figures(results, results_dir, wanted, notes, target_pct=1.0):
     """[(file stem, Figure)] of the `wanted` figure families, in FIGURES order; a family whose
-    data is missing adds a note to `notes` instead."""
-    builders = _builders(results, results_dir, notes)
+    data is missing adds a note to `notes` instead. `target_pct`: the precision the trade plot draws."""
+    builders = _builders(results, results_dir, notes, target_pct)
     made = []
     for family in FIGURES:
         if family not in wanted:
@@ -99,6 +100,16 @@ def _list_option(text, allowed):
     return chosen
 
 
+def _percent(text):
+    try:
+        value = float(text.rstrip("%"))
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and value > 0):
+        raise argparse.ArgumentTypeError(f"'{text}': expected a percentage > 0, e.g. 1 or 0.5%")
+    return value
+
+
 def parse_arguments(argv):
     parser = argparse.ArgumentParser(
         prog="tools/plot",
@@ -114,6 +125,9 @@ def parse_arguments(argv):
     parser.add_argument("--figures", default=default_figures,
                         help=f"which figures (default {default_figures}; also {','.join(ON_REQUEST)})",
                         type=lambda text: _list_option(text, FIGURES))
+    parser.add_argument("--target", type=_percent, default=1.0, metavar="PCT",
+                        help="the precision the trade plot draws, in %% of the median (default 1, as "
+                             "growthuq tradeoff's --target)")
     parser.add_argument("--force", action="store_true", help="replace existing plots")
     return parser.parse_args(argv)
 
@@ -127,7 +141,7 @@ def run(arguments, out=sys.stdout):
     from .output import refuse_overwrite, save_figure, save_text, target_paths  # matplotlib: after the checks
     out_dir = arguments.out or results_dir / "plots"
     notes = []
-    made = build_figures(results, results_dir, arguments.figures, notes)
+    made = build_figures(results, results_dir, arguments.figures, notes, arguments.target)
     paths = target_paths(out_dir, [stem for stem, _ in made], arguments.formats)
     captions_path = out_dir / "captions.md"
     if not arguments.force:

@@ -15,12 +15,15 @@ from matplotlib.patches import Rectangle
 from matplotlib.ticker import LogLocator, MaxNLocator
 from scipy.stats import rankdata
 
-from .style import LOG_QUANTITIES, axis_label, line_colors, new_figure, styled
+from .style import LOG_QUANTITIES, axis_label, display_name, line_colors, new_figure, styled
 
 CELL = 0.9             # cell width; the rest of each unit is the gap between cells
-CELL_INCHES = 1.0      # printed size of one unit
+CELL_INCHES = 1.0      # printed size of one unit, at most (see PAGE_WIDTH_INCHES)
+# A journal page's text width (18 cm): a correlogram of 10 or more variables is printed at this
+# width, not scaled down from a wider figure, so that its 6.5-8 pt text stays that size on paper.
+PAGE_WIDTH_INCHES = 7.0
 EDGE = 0.02            # beyond the outer cells, so that their frames are not clipped
-MARGIN_LEFT, MARGIN_RIGHT, MARGIN_BOTTOM, MARGIN_TOP = 0.85, 0.15, 0.85, 0.8
+MARGIN_LEFT, MARGIN_RIGHT, MARGIN_BOTTOM, MARGIN_TOP = 0.8, 0.1, 0.8, 0.35
 HISTOGRAM_BINS = 20
 CORRELATION_COLORS = "RdBu_r"
 # Scatter cells show at most this many samples (the first ones: a Latin hypercube assigns strata
@@ -52,7 +55,8 @@ class CellScale:
 
     def __init__(self, column, values):
         self.log = column.quantity in LOG_QUANTITIES and values.min() > 0
-        self.label = axis_label(column.quantity, column.unit)
+        # The unit under the symbol: one line of "v_exp (µm/s)" is wider than a cell printed at page width.
+        self.label = axis_label(column.quantity, column.unit).replace(" (", "\n(")
         transformed = self._transform(values)
         pad = 0.05 * (transformed.max() - transformed.min())
         self.low, self.high = transformed.min() - pad, transformed.max() + pad
@@ -101,7 +105,7 @@ def _edge_ticks(ax, scales, k):
             x = j + CELL * scale.to_unit(value)
             marks.append([(x, 0), (x, -0.04)])
             ax.annotate(f"{value:g}", (x, 0), xytext=(0, -5), textcoords="offset points", ha="right",
-                        va="top", rotation=45, rotation_mode="anchor", fontsize=6, gid=f"xtick/{j}")
+                        va="top", rotation=45, rotation_mode="anchor", fontsize=6.5, gid=f"xtick/{j}")
         ax.annotate(scale.label, (j + CELL / 2, 0), xytext=(0, -26), textcoords="offset points",
                     ha="center", va="top", fontsize=7, gid=f"xlabel/{j}")
     for i, scale in enumerate(scales):
@@ -111,9 +115,10 @@ def _edge_ticks(ax, scales, k):
                 y = y0 + CELL * scale.to_unit(value)
                 marks.append([(0, y), (-0.04, y)])
                 ax.annotate(f"{value:g}", (0, y), xytext=(-5, 0), textcoords="offset points",
-                            ha="right", va="center", fontsize=6, gid=f"ytick/{i}")
-        ax.annotate(scale.label, (0, y0 + CELL / 2), xytext=(-30, 0), textcoords="offset points",
-                    ha="right", va="center", rotation=90, rotation_mode="anchor", fontsize=7,
+                            ha="right", va="center", fontsize=6.5, gid=f"ytick/{i}")
+        # Beside the widest tick labels ("0.12" at 6.5 pt), its bottom (after the rotation) towards them.
+        ax.annotate(scale.label, (0, y0 + CELL / 2), xytext=(-24, 0), textcoords="offset points",
+                    ha="center", va="bottom", rotation=90, rotation_mode="anchor", fontsize=7,
                     gid=f"ylabel/{i}")
     ax.add_collection(LineCollection(marks, colors="0.2", linewidths=0.6))
 
@@ -128,7 +133,8 @@ def correlogram_figure(results, line):
     rho = rank_correlation(data) if k > 1 else np.ones((k, k))
     # Fixed margins in inches around square cells of CELL_INCHES: room for the tick labels and
     # variable names at the left and bottom, for the title at the top.
-    side = (k - 1 + CELL + 2 * EDGE) * CELL_INCHES
+    units = k - 1 + CELL + 2 * EDGE
+    side = units * min(CELL_INCHES, (PAGE_WIDTH_INCHES - MARGIN_LEFT - MARGIN_RIGHT) / units)
     width, height = side + MARGIN_LEFT + MARGIN_RIGHT, side + MARGIN_BOTTOM + MARGIN_TOP
     figure = new_figure(width, height, layout=None)
     ax = figure.add_axes([MARGIN_LEFT / width, MARGIN_BOTTOM / height, side / width, side / height])
@@ -152,11 +158,10 @@ def correlogram_figure(results, line):
             else:
                 value = round(float(rho[i, j]), 2) + 0.0  # + 0.0: no "-0.00"
                 ax.text(x0 + CELL / 2, y0 + CELL / 2, f"{value:.2f}", ha="center", va="center",
-                        fontsize=9 if k <= 8 else 8, fontweight="bold" if abs(value) >= 0.5 else "normal",
+                        fontsize=8 if k <= 8 else 7.5, fontweight="bold" if abs(value) >= 0.5 else "normal",
                         gid=f"spearman/{key}")
     _edge_ticks(ax, scales, k)
-    shown = f"the first {SCATTER_POINTS} of them" if data.shape[0] > SCATTER_POINTS else "all"
-    figure.suptitle(f"{results.campaign_name}: {line.name}, inputs and outputs over the "
-                    f"{data.shape[0]} samples with status ok\nhistograms (diagonal), scatter of "
-                    f"{shown} (below), Spearman rank correlation (above)", fontsize=10)
+    # What the cells are is the caption's (captions.py); the title names the line and the count.
+    figure.suptitle(f"{display_name(line.name)}: {data.shape[0]} samples with status ok", fontsize=9,
+                    y=1 - 0.12 / height, va="top")
     return figure

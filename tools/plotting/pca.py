@@ -6,7 +6,7 @@ import math
 import numpy as np
 
 from .errors import FigureSkipped
-from .style import line_colors, new_figure, styled
+from .style import display_name, line_colors, new_figure, styled
 
 
 @styled
@@ -32,7 +32,7 @@ def pca_figure(results):
                 label="cumulative", gid=f"{line.name}/cumulative")
         ax.set_xticks(positions, [f"PC{p}" for p in positions], rotation=90, fontsize=7)
         ax.set_ylim(0, 105)
-        ax.set_title(f"{line.name} (n = {line.analysis.samples_used})")
+        ax.set_title(f"{display_name(line.name)} (n = {line.analysis.samples_used})")
         if ax.get_subplotspec().is_first_col():
             ax.set_ylabel("explained variance (%)")
         ax.grid(axis="y", alpha=0.3)

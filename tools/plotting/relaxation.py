@@ -10,7 +10,7 @@ import numpy as np
 import matplotlib
 
 from .errors import FigureSkipped
-from .style import axis_label, new_figure, styled
+from .style import axis_label, display_name, new_figure, styled
 
 CURVES_PER_LINE = 4
 # Statuses of curves that were fitted; an extrapolated fit has tau_slow beyond the hold.
@@ -55,7 +55,7 @@ def _draw_line(ax, line):
     ax.set_xscale("log")
     ax.set_xlabel("t (s)")
     ax.set_ylabel(axis_label("F", "uN"))
-    ax.set_title(f"{line.name}: {len(shown)} of {len(line.relaxation)} curves ({ok} fits ok)")
+    ax.set_title(f"{display_name(line.name)}: {len(shown)} of {len(line.relaxation)} curves ({ok} fits ok)")
     ax.legend(loc="upper right", frameon=False, fontsize=6.5)
     ax.grid(alpha=0.3, which="major")
 

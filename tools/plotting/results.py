@@ -47,6 +47,8 @@ class Line:
     data_intervals: dict = field(default_factory=dict)  # quantity: (data_ci_low, data_ci_high)
     tubes: tuple = None                    # (fewest, most) tubes or curves a law of the line was
                                            # fitted to (raw-data lines); None for line files
+    tube_values: dict = field(default_factory=dict)  # variable: the values its law was fitted to, one
+                                           # per tube (/lines/<line>/fit_data; raw-data lines only)
 
     def column(self, quantity):
         return next((column for column in self.columns if column.quantity == quantity), None)
@@ -165,7 +167,7 @@ def _read_line(h5, name, path):
     relaxation = (read_relaxation(group["relaxation"], f"{where}/relaxation")
                   if "relaxation" in group else None)
     return Line(name, columns, names[codes], analysis, relaxation, _data_intervals(group),
-                _tubes(group))
+                _tubes(group), _tube_values(group))
 
 
 def _data_intervals(group):
@@ -189,6 +191,15 @@ def _tubes(group):
         return None
     counts = [int(n) for n in group["fits"]["n"]]
     return (min(counts), max(counts)) if counts else None
+
+
+def _tube_values(group):
+    """{variable: the measured values its law was fitted to}; empty for a line file's line (and in
+    files written before fit_data was stored)."""
+    if "fit_data" not in group:
+        return {}
+    return {name: np.asarray(node[()], dtype=float) for name, node in group["fit_data"].items()
+            if hasattr(node, "dtype") and len(node.shape) == 1}
 
 
 def _read_sensitivity(h5):

@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from .errors import FigureSkipped
-from .style import new_figure, styled
+from .style import display_name, new_figure, styled
 
 
 @styled
@@ -42,7 +42,7 @@ def sensitivity_figure(results):
         ax.set_yticks(positions, labels, fontsize=6)
         ax.axvline(0, color="0.5", linewidth=0.6)
         ax.set_xlim(-0.05, 1.05)
-        ax.set_title(line, fontsize=8)
+        ax.set_title(display_name(line), fontsize=8)
         ax.grid(axis="x", alpha=0.3)
         if ax.get_subplotspec().is_last_row():
             ax.set_xlabel("first-order index S (95 % interval)")

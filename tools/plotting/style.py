@@ -58,6 +58,12 @@ def axis_label(quantity, unit):
     return f"{quantity} ({unit})" if unit else quantity
 
 
+def display_name(line):
+    """A plant line as a paper names it: the genotypes separated by spaces, as in the published
+    tables ("xxt1 xxt2", "wild type"), not the campaign's identifier (xxt1_xxt2)."""
+    return line.replace("_", " ")
+
+
 def long_name(quantity):
     return LONG_NAMES.get(quantity, quantity)
 
