@@ -832,9 +832,11 @@ class RelaxationAndTrade(unittest.TestCase):
 
     def test_relaxation_panels_show_the_curves_and_their_fits(self):
         figure = PLOTTING.relaxation.relaxation_figure(self.results)
-        self.assertEqual(len(figure.axes), 2)
-        for ax, line in zip(figure.axes, ("wild_type", "pme48")):
-            self.assertEqual((ax.get_xlabel(), ax.get_ylabel(), ax.get_xscale()), ("t (s)", "F (µN)", "log"))
+        self.assertEqual(len(figure.axes), 4)  # per line the forces over their residuals
+        for ax, residual_ax, line in zip(figure.axes[0::2], figure.axes[1::2], ("wild_type", "pme48")):
+            self.assertEqual((ax.get_ylabel(), ax.get_xscale()), ("F (µN)", "log"))
+            self.assertEqual((residual_ax.get_xlabel(), residual_ax.get_ylabel(), residual_ax.get_xscale()),
+                             ("t (s)", "F - F_fit (µN)", "log"))
             curves = self.curves[line]
             expected = ([c for c in curves if c[1] == "ok"] + [c for c in curves if c[1] != "ok"])[:4]
             drawn = [l.get_gid().split("/")[1] for l in ax.lines if l.get_gid().endswith("/data")]
@@ -848,6 +850,11 @@ class RelaxationAndTrade(unittest.TestCase):
                 fitted = one(figure, f"{line}/{name}/fit")
                 self.assertTrue(np.array_equal(fitted.get_ydata(), fit[after & np.isfinite(fit)]))
                 self.assertEqual(fitted.get_xdata().size, 0 if status != "ok" else after.sum())
+                residual = one(figure, f"{line}/{name}/residual")
+                self.assertIs(residual.axes, residual_ax)
+                with_fit = after & np.isfinite(fit)
+                self.assertTrue(np.array_equal(residual.get_xdata(), t[with_fit]))
+                self.assertTrue(close(residual.get_ydata(), measured[with_fit] - fit[with_fit]))
                 self.assertEqual(mcolors.to_rgb(fitted.get_color()), mcolors.to_rgb(data.get_color()))
             # Curves of one line told apart: hues at least 0.3 apart in RGB (shades of one light
             # line colour were about 0.1 apart), and a marker each.
@@ -920,7 +927,9 @@ class RelaxationAndTrade(unittest.TestCase):
                              "--out", self.directory / "target")
         self.assertEqual(drawn.returncode, 0, drawn.stderr)
         assert_valid_png(self, self.directory / "target" / "tradeoff.png")
-        user_error(self, plot_command(self.directory, "--target", "-1"), "'-1'", "expected a percentage > 0")
+        refused = plot_command(self.directory, "--target", "-1")
+        self.assertEqual(refused.returncode, 2)
+        self.assertIn("argument --target: '-1': expected a percentage > 0", refused.stderr)
 
 
 def assert_print_size(test, figure, name):

@@ -12,9 +12,12 @@ FIXED = {
     "pca": "Explained variance of the principal components of the standardized inputs and outputs, per "
            "component and cumulative.",
     "relaxation": "Force-relaxation curves of the raw-data lines (points) and their generalized Maxwell fits "
-                  "(lines).",
-    "tradeoff": "Errors of the medians and IQRs and the CI half-width against the sample count, and the run's "
-                "time (growthuq tradeoff).",
+                  "(lines), t = 0 at the force maximum; under each panel the residuals F - F_fit of the fitted "
+                  "curves.",
+    "tradeoff": "Precision of the medians against the samples per line (growthuq tradeoff), log-log: lines, the "
+                "half-width of each line's 95 % confidence interval of the median in % of the median; open points, "
+                "the measured |median error| against the largest run; dashed, the target precision. Last panel: "
+                "the wall time of the run.",
 }
 
 

@@ -3,7 +3,9 @@ curves: one panel per line with relaxation data, a few curves each (fitted curve
 or extrapolated, a tau_slow beyond the hold),
 measured force as points and the fitted force as a line, on a log time axis (t = 0 at the force
 maximum; points at t <= 0, the ramp, cannot be shown on it). Within a panel every curve has its
-own hue and marker; the legend gives each fit's fast and slow relaxation times."""
+own hue and marker; the legend gives each fit's fast and slow relaxation times. Under each panel
+the residuals F - F_fit of the fitted curves on the same time axis: a fit that misses a phase of
+the decay shows there as a run of one sign, which the force scale hides."""
 import math
 
 import numpy as np
@@ -41,20 +43,27 @@ def _legend_text(curve):
     return curve.name
 
 
-def _draw_line(ax, line):
+def _draw_line(ax, residual_ax, line):
     shown = chosen_curves(line.relaxation)
     for index, curve in enumerate(shown):
         shade = CURVE_COLORS[index % len(CURVE_COLORS)]
+        marker = CURVE_MARKERS[index % len(CURVE_MARKERS)]
         after_maximum = curve.t_s > 0
-        ax.plot(curve.t_s[after_maximum], curve.F_uN[after_maximum], CURVE_MARKERS[index % len(CURVE_MARKERS)],
+        ax.plot(curve.t_s[after_maximum], curve.F_uN[after_maximum], marker,
                 markersize=2.4, color=shade, alpha=0.55, markeredgewidth=0, gid=f"{line.name}/{curve.name}/data")
         fitted = after_maximum & np.isfinite(curve.F_fit_uN)
         ax.plot(curve.t_s[fitted], curve.F_fit_uN[fitted], "-", color=shade, linewidth=1.4,
                 gid=f"{line.name}/{curve.name}/fit", label=_legend_text(curve))
+        residual_ax.plot(curve.t_s[fitted], curve.F_uN[fitted] - curve.F_fit_uN[fitted], marker, markersize=1.6,
+                         color=shade, alpha=0.5, markeredgewidth=0, gid=f"{line.name}/{curve.name}/residual")
     ok = sum(curve.status in FITTED for curve in line.relaxation)
     ax.set_xscale("log")
-    ax.set_xlabel("t (s)")
+    ax.tick_params(axis="x", labelbottom=False)
     ax.set_ylabel(axis_label("F", "uN"))
+    residual_ax.axhline(0, color="0.3", linewidth=0.8)
+    residual_ax.set_xlabel("t (s)")
+    residual_ax.set_ylabel(axis_label("F - F_fit", "uN"))
+    residual_ax.grid(alpha=0.3, which="major")
     ax.set_title(f"{display_name(line.name)}: {len(shown)} of {len(line.relaxation)} curves ({ok} fits ok)")
     ax.legend(loc="upper right", frameon=False, fontsize=6.5)
     ax.grid(alpha=0.3, which="major")
@@ -68,12 +77,13 @@ def relaxation_figure(results):
                             "(campaigns built from raw relaxation curves have one)")
     columns = min(3, len(lines))
     rows = math.ceil(len(lines) / columns)
-    figure = new_figure(4.0 * columns, 3.2 * rows + 0.5)
-    axes = figure.subplots(rows, columns, squeeze=False).ravel()
-    for ax, line in zip(axes, lines):
-        _draw_line(ax, line)
-    for ax in axes[len(lines):]:
-        ax.remove()
+    figure = new_figure(4.0 * columns, 4.0 * rows + 0.5)
+    # Per line a force panel over its residual panel, sharing the time axis.
+    grid = figure.add_gridspec(2 * rows, columns, height_ratios=(3, 1.2) * rows)
+    for index, line in enumerate(lines):
+        row, column = divmod(index, columns)
+        ax = figure.add_subplot(grid[2 * row, column])
+        _draw_line(ax, figure.add_subplot(grid[2 * row + 1, column], sharex=ax), line)
     figure.suptitle(f"{results.campaign_name}: force relaxation, measured (points) and "
                     "generalized Maxwell fit (line); t = 0 at the force maximum", fontsize=9)
     return figure
