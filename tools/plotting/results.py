@@ -198,8 +198,9 @@ def _tube_values(group):
     files written before fit_data was stored)."""
     if "fit_data" not in group:
         return {}
+    # The arrays carry the attribute units; the group's dimension scales (tube, tube_31, ...) do not.
     return {name: np.asarray(node[()], dtype=float) for name, node in group["fit_data"].items()
-            if hasattr(node, "dtype") and len(node.shape) == 1}
+            if hasattr(node, "dtype") and len(node.shape) == 1 and "units" in node.attrs}
 
 
 def _read_sensitivity(h5):
