@@ -41,7 +41,8 @@ class FidelityErrors(unittest.TestCase):
     def setUpClass(cls):
         cls.tmp = Path(tempfile.mkdtemp(prefix="growthuq-fidelity-errors-"))
         cls.errors = cls.tmp / "errors.csv"
-        done = subprocess.run([OPTIONS.cli, "fit-correction", "--out", cls.tmp / "correction.inc",
+        training = OPTIONS.source_dir / "src" / "correction" / "training.csv"  # the shipped training data
+        done = subprocess.run([OPTIONS.cli, "fit-correction", "--training", training, "--out", cls.tmp / "correction.inc",
                                "--errors", cls.errors], capture_output=True, text=True)
         if done.returncode != 0:
             raise RuntimeError(f"growthuq fit-correction failed: {done.stderr}")
