@@ -948,7 +948,8 @@ def assert_print_size(test, figure, name):
 
 class PrintSize(unittest.TestCase):
 
-    def test_growth_rate_and_correlogram_fit_the_page_with_text_of_6_5_pt_or_more(self):
+    def test_boxes_growth_rate_and_correlogram_fit_the_page_with_text_of_6_5_pt_or_more(self):
+        assert_print_size(self, PLOTTING.boxes.box_figure(Shared.results), "boxes")
         assert_print_size(self, PLOTTING.growth_rate.growth_rate_figure(Shared.results), "growth_rate")
         for line in Shared.results.lines:
             assert_print_size(self, PLOTTING.correlogram.correlogram_figure(Shared.results, line), line.name)
