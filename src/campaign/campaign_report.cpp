@@ -28,6 +28,21 @@ bool has_data_interval(const QuantitySummary& summary) {
   return std::isfinite(summary.data_ci_low) && std::isfinite(summary.data_ci_high);
 }
 
+// A quantity the bootstrap does not move: a line file's law is held fixed in every replicate, and
+// the reference line's v is calibrated to its v_exp median in each, so when that median comes from
+// a fixed law the replicates agree but for rounding (0.028 and 0.028000000000000008).
+// "[0.028, 0.028]" would read as a measured interval of zero width.
+bool data_interval_is_fixed(const QuantitySummary& summary) {
+  return has_data_interval(summary) &&
+         summary.data_ci_high - summary.data_ci_low <= 1e-12 * std::max(std::abs(summary.data_ci_low), std::abs(summary.data_ci_high));
+}
+
+std::string data_interval_text(const QuantitySummary& summary) {
+  if (!has_data_interval(summary)) return "-";
+  if (data_interval_is_fixed(summary)) return "fixed";
+  return "[" + number(summary.data_ci_low) + ", " + number(summary.data_ci_high) + "]";
+}
+
 }  // namespace
 
 std::string format_summary_table(std::span<const QuantitySummary> summaries) {
@@ -40,12 +55,15 @@ std::string format_summary_table(std::span<const QuantitySummary> summaries) {
                      (data ? padded("data 95 % interval", 22) : std::string()) + padded("Monte Carlo 95 % CI", 22) +
                      padded("IQR", 11) + padded("10-90 %", 22) + "flagged\n";
   for (const QuantitySummary& s : summaries) {
-    const std::string data_interval = has_data_interval(s) ? "[" + number(s.data_ci_low) + ", " + number(s.data_ci_high) + "]" : "-";
     const std::string monte_carlo = "[" + number(s.median_ci_low) + ", " + number(s.median_ci_high) + "]";
     const std::string range = number(s.p10) + " - " + number(s.p90);
     text += padded(s.line, line_width) + padded(s.quantity, 10) + padded(s.unit, 8) + padded(number(s.median), 10) +
-            (data ? padded(data_interval, 22) : std::string()) + padded(monte_carlo, 22) + padded(number(s.iqr), 11) +
+            (data ? padded(data_interval_text(s), 22) : std::string()) + padded(monte_carlo, 22) + padded(number(s.iqr), 11) +
             padded(range, 22) + std::to_string(s.n_flagged) + " of " + std::to_string(s.n + s.n_flagged) + "\n";
+  }
+  if (std::any_of(summaries.begin(), summaries.end(), data_interval_is_fixed)) {
+    text += "fixed: the bootstrap does not move this median (a law held fixed in every replicate, or the reference "
+            "line's v calibrated to a fixed v_exp); its only uncertainty is the Monte Carlo CI\n";
   }
   return text;
 }
