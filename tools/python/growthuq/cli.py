@@ -145,13 +145,13 @@ class LineFit:
         return f"LineFit({first!r}, path={str(self.path) if self.path else None!r})"
 
 
-def fit_line(raw, *, out=None, cli=None, cwd=None, **options):
+def fit_line(raw, *, out=None, cli=None, cwd=None, quiet=True, **options):
     """Runs `growthuq fit-line RAW.ini` (rho_um=, nu=, force=) and returns a LineFit: the fitted
     line file's text and the fit report. With `out` the line file is also written there (refused
-    when it exists, unless force=True)."""
+    when it exists, unless force=True). quiet=False shows the curve fits' progress live."""
     with tempfile.TemporaryDirectory(prefix="growthuq-fit-line-") as scratch:
         target = Path(scratch) / "line.ini" if out is None else out
-        stdout, _ = _call(cli, ["fit-line", raw, "--out", target, *_options(options)], cwd)
+        stdout, _ = _call(cli, ["fit-line", raw, "--out", target, *_options(options), *_quiet_flag(quiet)], cwd, quiet)
         text = _in(cwd, target).read_text()
     if out is None:  # the report's last line names the scratch file, gone with it
         stdout = "".join(line for line in stdout.splitlines(keepends=True) if not line.startswith(f"wrote {target}"))

@@ -97,7 +97,7 @@ class Wrappers(unittest.TestCase):
         self.assertEqual(drawn, {"pme48": self.work / "raw" / "pme48" / "raw.ini"})
         self.assertTrue(drawn["pme48"].is_file())
         fit = growthuq.fit_line(drawn["pme48"])
-        direct = subprocess.run([growthuq.find_cli(), "fit-line", str(drawn["pme48"]), "--out", "-"],
+        direct = subprocess.run([growthuq.find_cli(), "fit-line", str(drawn["pme48"]), "--out", "-", "--quiet"],
                                 capture_output=True, text=True, check=True)
         self.assertEqual(fit.text, direct.stdout)  # the line file, as the CLI writes it
         # Its fit report, but for the last line: where the CLI wrote the line file (a scratch file here).
@@ -146,6 +146,22 @@ class Progress(unittest.TestCase):
         self.assertIn("fitting relaxation curves of line xeg113", shown)
         self.assertIn("data uncertainty", shown)
         self.assertGreater(stream.written_while_running, 0)  # live, not after the run
+
+    def test_fit_line_shows_its_curve_fits_unless_quiet(self):
+        raw = REPOSITORY / "distributions" / "example_raw" / "xeg113" / "raw.ini"
+        curves = sum(1 for line in (raw.parent / "relaxation_meta.csv").read_text().splitlines()
+                     if line and not line.startswith(("#", "curve")))
+        for quiet in (False, True):
+            saved, sys.stderr = sys.stderr, io.StringIO()
+            try:
+                growthuq.fit_line(raw, quiet=quiet)
+                shown = sys.stderr.getvalue()
+            finally:
+                sys.stderr = saved
+            if quiet:
+                self.assertEqual(shown, "")
+            else:
+                self.assertRegex(shown, rf"fitting relaxation curves: {curves} curves in [0-9.]+ s")
 
     def test_quiet_shows_nothing(self):
         self.assertEqual(self.run_with_stderr(quiet=True).getvalue(), "")
