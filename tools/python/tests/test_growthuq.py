@@ -333,12 +333,9 @@ class RunAndLoad(unittest.TestCase):
         self.assertIn("fixed: the bootstrap does not move this median", self.results.report)
 
     def test_help_run_names_every_file_the_run_wrote(self):
-        help_text = subprocess.run([growthuq.find_cli(), "help", "run"], capture_output=True, text=True,
-                                   check=True).stdout
-        for name in sorted(path.name for path in self.out.iterdir()):
-            self.assertIn(name, help_text)
+        help_text = assert_help_run_names_the_files_in(self, self.out)
         for words in ("fidelity", "closed_form", "shell_fe", "data 95 % interval"):
-            self.assertIn(words, " ".join(help_text.split()))
+            self.assertIn(words, help_text)
 
     def test_the_readme_figure(self):
         """The Python example of the top-level README, run as written on these results."""
@@ -481,6 +478,15 @@ class FindCli(unittest.TestCase):
 
 
 
+def assert_help_run_names_the_files_in(test, directory):
+    """`growthuq help run` names every file of `directory`, a run's output; returns the help text
+    (its words joined by single spaces)."""
+    help_text = subprocess.run([growthuq.find_cli(), "help", "run"], capture_output=True, text=True, check=True).stdout
+    for name in sorted(path.name for path in Path(directory).iterdir()):
+        test.assertIn(name, help_text)
+    return " ".join(help_text.split())
+
+
 def assert_frame_is_csv(test, frame, csv):
     """Same columns, rows and values (text as text, numbers exactly, empty as NaN)."""
     test.assertEqual(list(frame.columns), list(csv.columns))
@@ -530,6 +536,8 @@ raw = {REPOSITORY}/distributions/example_raw/wild_type/raw.ini
             assert_frame_is_csv(self, results.data_uncertainty, in_campaign_order(read["data_uncertainty"], results.lines))
             self.assertEqual(list(results.comparisons["line_a"].cat.categories), ["xeg113", "wild_type"])
             self.assertEqual(list(results.letters["line"].cat.categories), ["xeg113", "wild_type"])
+            self.assertIn("letters.csv", [path.name for path in (work / "out").iterdir()])
+            assert_help_run_names_the_files_in(self, work / "out")
 
 
 if __name__ == "__main__":
