@@ -28,22 +28,18 @@ bool has_data_interval(const QuantitySummary& summary) {
   return std::isfinite(summary.data_ci_low) && std::isfinite(summary.data_ci_high);
 }
 
-// A quantity the bootstrap does not move: a line file's law is held fixed in every replicate, and
-// the reference line's v is calibrated to its v_exp median in each, so when that median comes from
-// a fixed law the replicates agree but for rounding (0.028 and 0.028000000000000008).
-// "[0.028, 0.028]" would read as a measured interval of zero width.
-bool data_interval_is_fixed(const QuantitySummary& summary) {
-  return has_data_interval(summary) &&
-         summary.data_ci_high - summary.data_ci_low <= 1e-12 * std::max(std::abs(summary.data_ci_low), std::abs(summary.data_ci_high));
-}
-
 std::string data_interval_text(const QuantitySummary& summary) {
   if (!has_data_interval(summary)) return "-";
-  if (data_interval_is_fixed(summary)) return "fixed";
+  if (data_interval_is_fixed(summary.data_ci_low, summary.data_ci_high)) return "fixed";
   return "[" + number(summary.data_ci_low) + ", " + number(summary.data_ci_high) + "]";
 }
 
 }  // namespace
+
+bool data_interval_is_fixed(double low, double high) {
+  // The replicates agree but for rounding: 0.027999999999999997 and 0.028000000000000008.
+  return high - low <= 1e-12 * std::max(std::abs(low), std::abs(high));
+}
 
 std::string format_summary_table(std::span<const QuantitySummary> summaries) {
   std::size_t line_width = 6;
@@ -61,7 +57,10 @@ std::string format_summary_table(std::span<const QuantitySummary> summaries) {
             (data ? padded(data_interval_text(s), 22) : std::string()) + padded(monte_carlo, 22) + padded(number(s.iqr), 11) +
             padded(range, 22) + std::to_string(s.n_flagged) + " of " + std::to_string(s.n + s.n_flagged) + "\n";
   }
-  if (std::any_of(summaries.begin(), summaries.end(), data_interval_is_fixed)) {
+  const auto fixed = [](const QuantitySummary& s) {
+    return has_data_interval(s) && data_interval_is_fixed(s.data_ci_low, s.data_ci_high);
+  };
+  if (std::any_of(summaries.begin(), summaries.end(), fixed)) {
     text += "fixed: the bootstrap does not move this median (a law held fixed in every replicate, or the reference "
             "line's v calibrated to a fixed v_exp); its only uncertainty is the Monte Carlo CI\n";
   }

@@ -314,23 +314,29 @@ class RunAndLoad(unittest.TestCase):
         self.assertIn(f"replicates {len(self.results.replicates)}x5", text)
         self.assertNotIn("comparisons", text)  # empty here
 
-    def test_the_summary_table_prints_fixed_for_a_median_the_bootstrap_does_not_move(self):
+    def test_the_report_prints_fixed_for_a_median_the_bootstrap_does_not_move(self):
         csv = pd.read_csv(self.out / "data_uncertainty.csv", float_precision="round_trip")
-        rows = {(line, quantity): text for line, quantity, text in
-                re.findall(r"^(\S+)\s+(\S+)\s+\S+(?: \S+)?\s+\S+\s+(fixed|\[[^]]+\])", self.results.report, re.MULTILINE)}
-        self.assertEqual(len(rows), len(csv))
-        for _, row in csv.iterrows():
-            width = row["data_ci_high"] - row["data_ci_low"]
-            text = rows[(row["line"], row["quantity"])]
-            if width <= 1e-12 * abs(row["data_ci_high"]):
-                self.assertEqual(text, "fixed", (row["line"], row["quantity"]))
-            else:
-                low, high = (float(x) for x in text.strip("[]").split(", "))
-                self.assertAlmostEqual(low, row["data_ci_low"], delta=1e-3 * abs(row["data_ci_low"]))
-                self.assertAlmostEqual(high, row["data_ci_high"], delta=1e-3 * abs(row["data_ci_high"]))
-        # The reference line's v is calibrated to its published (fixed) v_exp median in every replicate.
-        self.assertEqual(rows[("wild_type", "v")], "fixed")
-        self.assertIn("fixed: the bootstrap does not move this median", self.results.report)
+        report = self.results.report
+        # The summary table (above the line saying what its intervals are) and the data-uncertainty
+        # table of the bootstrap's section: the interval is the column after the median in both.
+        tables = {"summary": report[:report.index("\ndata 95 % interval: ")],
+                  "data uncertainty": report[report.index("\ndata uncertainty of the medians"):]}
+        for name, table in tables.items():
+            rows = {(line, quantity): text for line, quantity, text in
+                    re.findall(r"^(\S+)\s+(\S+)\s+\S+(?: \S+)?\s+\S+\s+(fixed|\[[^]]+\])", table, re.MULTILINE)}
+            self.assertEqual(len(rows), len(csv), name)
+            for _, row in csv.iterrows():
+                width = row["data_ci_high"] - row["data_ci_low"]
+                text = rows[(row["line"], row["quantity"])]
+                if width <= 1e-12 * abs(row["data_ci_high"]):
+                    self.assertEqual(text, "fixed", (name, row["line"], row["quantity"]))
+                else:
+                    low, high = (float(x) for x in text.strip("[]").split(", "))
+                    self.assertAlmostEqual(low, row["data_ci_low"], delta=1e-3 * abs(row["data_ci_low"]))
+                    self.assertAlmostEqual(high, row["data_ci_high"], delta=1e-3 * abs(row["data_ci_high"]))
+            # The reference line's v is calibrated to its published (fixed) v_exp median in every replicate.
+            self.assertEqual(rows[("wild_type", "v")], "fixed", name)
+        self.assertIn("fixed: the bootstrap does not move this median", report)
 
     def test_help_run_names_every_file_the_run_wrote(self):
         help_text = assert_help_run_names_the_files_in(self, self.out)
