@@ -28,7 +28,18 @@ bool has_data_interval(const QuantitySummary& summary) {
   return std::isfinite(summary.data_ci_low) && std::isfinite(summary.data_ci_high);
 }
 
+std::string data_interval_text(const QuantitySummary& summary) {
+  if (!has_data_interval(summary)) return "-";
+  if (data_interval_is_fixed(summary.data_ci_low, summary.data_ci_high)) return "fixed";
+  return "[" + number(summary.data_ci_low) + ", " + number(summary.data_ci_high) + "]";
+}
+
 }  // namespace
+
+bool data_interval_is_fixed(double low, double high) {
+  // The replicates agree but for rounding: 0.027999999999999997 and 0.028000000000000008.
+  return high - low <= 1e-12 * std::max(std::abs(low), std::abs(high));
+}
 
 std::string format_summary_table(std::span<const QuantitySummary> summaries) {
   std::size_t line_width = 6;
@@ -40,12 +51,18 @@ std::string format_summary_table(std::span<const QuantitySummary> summaries) {
                      (data ? padded("data 95 % interval", 22) : std::string()) + padded("Monte Carlo 95 % CI", 22) +
                      padded("IQR", 11) + padded("10-90 %", 22) + "flagged\n";
   for (const QuantitySummary& s : summaries) {
-    const std::string data_interval = has_data_interval(s) ? "[" + number(s.data_ci_low) + ", " + number(s.data_ci_high) + "]" : "-";
     const std::string monte_carlo = "[" + number(s.median_ci_low) + ", " + number(s.median_ci_high) + "]";
     const std::string range = number(s.p10) + " - " + number(s.p90);
     text += padded(s.line, line_width) + padded(s.quantity, 10) + padded(s.unit, 8) + padded(number(s.median), 10) +
-            (data ? padded(data_interval, 22) : std::string()) + padded(monte_carlo, 22) + padded(number(s.iqr), 11) +
+            (data ? padded(data_interval_text(s), 22) : std::string()) + padded(monte_carlo, 22) + padded(number(s.iqr), 11) +
             padded(range, 22) + std::to_string(s.n_flagged) + " of " + std::to_string(s.n + s.n_flagged) + "\n";
+  }
+  const auto fixed = [](const QuantitySummary& s) {
+    return has_data_interval(s) && data_interval_is_fixed(s.data_ci_low, s.data_ci_high);
+  };
+  if (std::any_of(summaries.begin(), summaries.end(), fixed)) {
+    text += "fixed: the bootstrap does not move this median (a law held fixed in every replicate, or the reference "
+            "line's v calibrated to a fixed v_exp); its only uncertainty is the Monte Carlo CI\n";
   }
   return text;
 }

@@ -16,6 +16,11 @@ namespace growthuq {
 // The column "data 95 % interval" is there when a summary has one (data_ci_low/high finite).
 std::string format_summary_table(std::span<const QuantitySummary> summaries);
 
+// Whether the data 95 % interval [low, high] has zero width but for rounding: a median the
+// bootstrap does not move (a law held fixed in every replicate, or the reference line's v
+// calibrated to a fixed v_exp). The tables print "fixed" for it rather than "[0.028, 0.028]".
+bool data_interval_is_fixed(double low, double high);
+
 // The line under the summary table saying what its intervals are: the bootstrap that gave the
 // data intervals (`replicates` > 0), or that the intervals are Monte Carlo only, and why
 // (replicates = 0 on raw-data lines, or no raw-data line).

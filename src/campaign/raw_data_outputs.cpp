@@ -1,4 +1,5 @@
 #include "campaign/raw_data_outputs.hpp"
+#include "campaign/campaign_report.hpp"
 #include "campaign/line_comparison_outputs.hpp"
 #include "campaign/report_text.hpp"
 
@@ -192,7 +193,9 @@ std::string uncertainty_report(std::span<const DataUncertainty> rows, const Camp
                      padded("data 95 % interval", 22) + padded("Monte Carlo 95 % CI", 22) + "replicates\n";
   for (const DataUncertainty& row : rows) {
     text += padded(row.line, line_width) + padded(row.quantity, 10) + padded(row.unit, 8) + padded(significant(row.median), 10) +
-            padded("[" + significant(row.low) + ", " + significant(row.high) + "]", 22) +
+            padded(data_interval_is_fixed(row.low, row.high) ? std::string("fixed")
+                                                             : "[" + significant(row.low) + ", " + significant(row.high) + "]",
+                   22) +
             padded("[" + significant(row.median_ci_low) + ", " + significant(row.median_ci_high) + "]", 22) +
             std::to_string(row.replicates) +
             (row.failed > 0 ? " (" + std::to_string(row.failed) + " failed)" : std::string()) + "\n";

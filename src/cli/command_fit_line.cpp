@@ -4,14 +4,18 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "campaign/progress.hpp"
 #include "commands.hpp"
+#include "growthuq/campaign/progress_mode.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/rawdata/raw_line_file.hpp"
 #include "growthuq/rawdata/raw_line_fit.hpp"
+#include "growthuq/relaxation/analysis.hpp"
 #include "options.hpp"
 #include "result_output.hpp"
 
@@ -20,7 +24,7 @@ namespace growthuq::cli {
 int run_fit_line(const Arguments& arguments) {
   std::string raw_path, out;
   std::string rho_um, nu = "0.2";
-  bool force = false;
+  bool force = false, quiet = false;
   po::options_description described("options");
   described.add_options()
       ("raw", po::value(&raw_path)->required(), "raw line file (raw.ini)")
@@ -28,7 +32,8 @@ int run_fit_line(const Arguments& arguments) {
                                "standard output (the report then goes to standard error)")
       ("rho-um", po::value(&rho_um), "probe radius (um) for relaxation curves whose tube sheet has no rho_um column")
       ("nu", po::value(&nu)->default_value(nu), "Poisson ratio of the wall (maps force to E_r(t))")
-      ("force", po::bool_switch(&force), "overwrite --out");
+      ("force", po::bool_switch(&force), "overwrite --out")
+      ("quiet", po::bool_switch(&quiet), "no progress on stderr (the relaxation curve fits, seconds)");
   po::positional_options_description positional;
   positional.add("raw", 1);
   po::variables_map values;
@@ -49,6 +54,19 @@ int run_fit_line(const Arguments& arguments) {
   settings.instrument = parse_instrument(entries, ProbeRadius::optional);
   const Overwrite overwrite = force ? Overwrite::allow : Overwrite::refuse;
   if (!out.empty()) check_result_target(out, overwrite);
+  // The curve fits are most of the time (about 5 s for the shipped example lines): not a silent
+  // wait, as in a campaign's run and check (campaign/shared_raw_fits.cpp).
+  const ProgressMode mode = choose_progress_mode(quiet);
+  settings.fit_curves = [mode](const std::vector<RelaxationCurve>& curves, const RelaxationOptions& options) {
+    StepProgress shown(mode, std::cerr, "fitting relaxation curves", "curve", curves.size());
+    std::vector<CurveFit> fits;
+    for (const RelaxationCurve& curve : curves) {
+      fits.push_back(analyze_relaxation_curve(curve, options));
+      shown.advance(1);
+    }
+    shown.finish();
+    return fits;
+  };
   const RawLineFit fit = fit_raw_line(read_raw_line_file(raw_path), settings);
   std::ostream& report = report_stream(out);
   report << format_raw_fit_report(fit);

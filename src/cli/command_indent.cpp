@@ -123,7 +123,9 @@ int run_indent(const Arguments& arguments) {
     check_can_write(shell_field_data_path(flags.field), overwrite);
   }
 
-  // A curve takes minutes: its progress in nanometres of depth (a deepened curve starts anew).
+  // A curve takes minutes: its progress in nanometres of depth. A curve whose force stays below
+  // the window's top is simulated again, deeper (src/fe/indentation.cpp): its progress starts
+  // anew, after one line saying why, so the restart does not read as lost work.
   const ProgressMode mode = choose_progress_mode(flags.quiet);
   std::optional<StepProgress> progress;
   std::size_t shown = 0, shown_total = 0;
@@ -132,6 +134,10 @@ int run_indent(const Arguments& arguments) {
     const auto reached = std::min(total, static_cast<std::size_t>(std::lround(depth * 1e9)));
     if (!progress || total != shown_total) {
       if (progress) progress->clear();
+      if (progress && mode != ProgressMode::none) {
+        std::cerr << "indent: the force stayed below the window's top (" << format_double(options.force_window[1] * 1e6)
+                  << " uN) by " << shown_total << " nm: simulating the curve again to " << total << " nm\n";
+      }
       progress.emplace(mode, std::cerr, "indent", "nm of depth", total);
       shown = 0, shown_total = total;
     }

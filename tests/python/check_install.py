@@ -1,7 +1,8 @@
 """Installs the growthuq Python package as tools/python/README.md says, without network
 (pip install --no-build-isolation, here into a scratch --target so the system stays as it is),
 from a copy of the sources (pip builds in the source folder, which must stay clean), and checks
-that the installed package is the one imported and exposes load, run and eval_tubes.
+that the installed package is the one imported, with every module (load, the CLI wrappers and
+the exceptions).
 Usage: check_install.py PACKAGE_DIR. Exits non-zero with pip's output on a failure."""
 import os
 import shutil
@@ -21,7 +22,7 @@ with tempfile.TemporaryDirectory(prefix="growthuq-install-") as scratch:
     if install.returncode != 0:
         sys.exit("pip install failed:\n" + install.stdout + install.stderr)
     probe = subprocess.run([sys.executable, "-c", "import growthuq; print(growthuq.__file__); "
-                            "print(all(callable(f) for f in (growthuq.load, growthuq.run, growthuq.eval_tubes)))"],
+                            "print(all(callable(getattr(growthuq, name)) for name in growthuq.__all__))"],
                            capture_output=True, text=True, env=dict(os.environ, PYTHONPATH=str(target)),
                            cwd=scratch, check=False)
     lines = probe.stdout.split()

@@ -13,13 +13,13 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
+from .errors import ResultsError
+from .h5text import text as _text, texts as _texts
+from .line_arrays import bootstrap_replicates, principal_components, relaxation_points
+from .views import long_frame, short_repr, summary_array
 
-class ResultsError(ValueError):
-    """A results directory or file that is missing or not growthuq's layout; the message names
-    the file and what was expected."""
 
-
-@dataclass
+@dataclass(repr=False)
 class Results:
     path: Path                  # the results.h5 read
     lines: list                 # line names, in campaign order
@@ -28,7 +28,7 @@ class Results:
     correlations: pd.DataFrame  # line, matrix (target, achieved, input_output), row, column, spearman
     fits: pd.DataFrame          # raw-data lines: line and the fits table (chosen law per variable)
     fit_parameters: pd.DataFrame  # raw-data lines: line, variable, unit, family, chosen, parameter, value
-    dataset: xr.Dataset         # the sample columns and status as (line, sample) arrays
+    dataset: xr.Dataset         # the sample columns and status as (line, sample) arrays, the summary as (line, quantity, statistic)
     # The data uncertainty (campaigns/README.md, "Data uncertainty"); empty frames when the
     # campaign ran no bootstrap or compared no lines.
     data_uncertainty: pd.DataFrame = field(default_factory=pd.DataFrame)  # the rows of data_uncertainty.csv, campaign order
@@ -38,6 +38,16 @@ class Results:
     # (line, output, input, method, index, ci_low, ci_high, samples_used, sections); empty when
     # no line had enough samples with status ok.
     sensitivity: pd.DataFrame = field(default_factory=pd.DataFrame)
+    # Raw-data lines: every family tried per variable, and the relaxation curves' fits (one row
+    # per curve, the columns of `growthuq relax`) and points (line_arrays.py).
+    fit_candidates: pd.DataFrame = field(default_factory=pd.DataFrame)
+    relaxation_fits: pd.DataFrame = field(default_factory=pd.DataFrame)
+    relaxation_points: pd.DataFrame = field(default_factory=pd.DataFrame)
+    # The bootstrap's replicate medians (line, quantity, replicate, median, unit) and the
+    # principal components (line, variable, component, loading; line, component, ratio).
+    replicates: pd.DataFrame = field(default_factory=pd.DataFrame)
+    loadings: pd.DataFrame = field(default_factory=pd.DataFrame)
+    explained_variance: pd.DataFrame = field(default_factory=pd.DataFrame)
     attrs: dict = field(default_factory=dict)  # root attributes: seed, kappa, samples_per_line, campaign_text, ...
     # How the results were made (/provenance, campaigns/README.md): version, campaign and its
     # SHA-256, seed, samples, instrument, data-interval settings, and `lines` and `models` as
@@ -45,14 +55,17 @@ class Results:
     provenance: dict = field(default_factory=dict)
     report: str = ""            # stdout of the run, when the results come from growthuq.run
 
+    def tables(self):
+        """Every frame by name, in the order above (empty ones included)."""
+        return {name: value for name, value in vars(self).items() if isinstance(value, pd.DataFrame)}
 
-def _text(value):
-    """h5py gives str for attributes but bytes inside compound tables."""
-    return value.decode("utf-8") if isinstance(value, bytes) else str(value)
+    @property
+    def long(self):
+        """The samples as one tidy frame: line, sample, quantity, value, unit (views.long_frame)."""
+        return long_frame(self.samples, self.dataset)
 
-
-def _texts(values):
-    return [_text(value) for value in values]
+    def __repr__(self):
+        return short_repr(self)
 
 
 def _plain(value):
@@ -243,8 +256,18 @@ def _load_open(path, h5):
         letters = _root_table(h5, "line_letters", lines, ["line"])
         sensitivity = _root_table(h5, "sensitivity", lines, ["line"])
         provenance = _provenance(h5)
+        arrays = {"fit_candidates": _line_tables(h5, lines, "fit_candidates"),
+                  "relaxation_fits": _line_tables(h5, lines, "relaxation/fits"),
+                  "relaxation_points": relaxation_points(h5, lines),
+                  "replicates": bootstrap_replicates(h5, lines)}
+        arrays["loadings"], arrays["explained_variance"] = principal_components(h5, lines)
+    for name in ("relaxation_points", "replicates", "loadings", "explained_variance"):
+        if len(arrays[name]):
+            arrays[name] = _in_line_order(arrays[name], lines)
     dataset = _combined([_line_dataset(path, line) for line in lines], lines)
     dataset.attrs = {name: value for name, value in attrs.items() if not isinstance(value, list)}
-    return Results(path, lines, _samples_frame(dataset, lines), summary, correlations, fits, fit_parameters,
+    samples = _samples_frame(dataset, lines)
+    dataset["summary"] = summary_array(summary, lines)
+    return Results(path, lines, samples, summary, correlations, fits, fit_parameters,
                    dataset, data_uncertainty=data_uncertainty, comparisons=comparisons, letters=letters,
-                   sensitivity=sensitivity, attrs=attrs, provenance=provenance)
+                   sensitivity=sensitivity, attrs=attrs, provenance=provenance, **arrays)

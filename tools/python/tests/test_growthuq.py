@@ -136,7 +136,7 @@ class RunAndLoad(unittest.TestCase):
 
     def test_dataset_has_named_dimensions_and_units(self):
         dataset = self.results.dataset
-        self.assertEqual(dict(dataset.sizes), {"line": 2, "sample": SAMPLES})
+        self.assertEqual(dict(dataset.sizes), {"line": 2, "sample": SAMPLES, "quantity": 5, "statistic": 14})
         self.assertEqual(dataset["p_MPa"].dims, ("line", "sample"))
         self.assertEqual(dataset["p_MPa"].attrs["units"], "MPa")
         self.assertEqual(dataset["p_MPa"].attrs["long_name"], "turgor pressure")
@@ -211,6 +211,137 @@ class RunAndLoad(unittest.TestCase):
             printed = ", ".join("%s=%.6g" % (p, v) for p, v in zip(mine["parameter"], mine["value"]))
             self.assertTrue(fit["parameters"].startswith(printed), (printed, fit["parameters"]))
         self.assertEqual(parameters["value"].dtype, np.float64)
+
+    def test_long_frame_holds_every_value_of_samples_csv_once(self):
+        long, csv = self.results.long, self.samples_csv
+        self.assertEqual(list(long.columns), ["line", "sample", "quantity", "value", "unit"])
+        dataset = self.results.dataset
+        for column in self.results.samples.columns[2:-1]:
+            quantity, unit = dataset[column].attrs["quantity"], dataset[column].attrs["units"]
+            for line in self.results.lines:
+                rows = long[(long["line"] == line) & (long["quantity"] == quantity)]
+                self.assertEqual(set(rows["unit"]), {unit}, (line, column))
+                # samples.csv keeps wild_type.ini's einf in %: the long frame has it as a fraction.
+                source = "einf_pct" if column == "einf_frac" and line == "wild_type" else column
+                scale = 0.01 if source == "einf_pct" else 1.0
+                mine = csv[csv["line"] == line]
+                values = numbers(mine[source]) * scale
+                held = ~np.isnan(values)
+                np.testing.assert_array_equal(rows["sample"].to_numpy(), mine["sample"].to_numpy()[held])
+                np.testing.assert_allclose(rows["value"].to_numpy(), values[held], rtol=1e-15, err_msg=(line, column))
+        # An output's rows are the values its summary row counts, with its median.
+        summary = self.summary_csv
+        for _, row in summary.iterrows():
+            values = long[(long["line"] == row["line"]) & (long["quantity"] == row["quantity"])]["value"]
+            self.assertEqual(len(values), row["n"], (row["line"], row["quantity"]))
+            self.assertAlmostEqual(values.median(), row["median"], delta=1e-12 * abs(row["median"]))
+
+    def test_summary_in_the_dataset_is_summary_csv(self):
+        summary = self.results.dataset["summary"]
+        self.assertEqual(summary.dims, ("line", "quantity", "statistic"))
+        for _, row in self.summary_csv.iterrows():
+            cell = summary.sel(line=row["line"], quantity=row["quantity"])
+            self.assertEqual(str(cell["unit"].values), row["unit"])
+            for statistic in cell["statistic"].values:
+                expected = float(row[statistic]) if row[statistic] != "" else np.nan
+                np.testing.assert_array_equal(float(cell.sel(statistic=statistic)), expected,
+                                              err_msg=(row["line"], row["quantity"], statistic))
+
+    def test_bootstrap_replicates_give_the_data_intervals_of_data_uncertainty_csv(self):
+        csv = pd.read_csv(self.out / "data_uncertainty.csv", float_precision="round_trip")
+        replicates = self.results.replicates
+        self.assertEqual(list(replicates.columns), ["line", "quantity", "replicate", "median", "unit"])
+        for _, row in csv.iterrows():
+            mine = replicates[(replicates["line"] == row["line"]) & (replicates["quantity"] == row["quantity"])]
+            self.assertEqual(len(mine), row["replicates"])
+            self.assertEqual(list(mine["replicate"]), list(range(row["replicates"])))
+            self.assertEqual(set(mine["unit"]), {row["unit"]})
+            medians = mine["median"].to_numpy()
+            # The interval is the 2.5 and 97.5 % quantiles of the replicate medians, data_sd their sd.
+            scale = abs(row["median"])
+            self.assertAlmostEqual(np.quantile(medians, 0.025), row["data_ci_low"], delta=1e-12 * scale)
+            self.assertAlmostEqual(np.quantile(medians, 0.975), row["data_ci_high"], delta=1e-12 * scale)
+            self.assertAlmostEqual(np.std(medians, ddof=1), row["data_sd"], delta=1e-9 * scale)
+
+    def test_principal_components_are_those_of_the_samples_correlation(self):
+        loadings, explained = self.results.loadings, self.results.explained_variance
+        for line in self.results.lines:
+            mine = loadings[loadings["line"] == line]
+            variables = list(dict.fromkeys(mine["variable"]))
+            components = [f"PC{i + 1}" for i in range(len(variables))]
+            matrix = mine.pivot(index="variable", columns="component", values="loading").loc[variables, components]
+            ok = self.results.samples[(self.results.samples["line"] == line) & (self.results.samples["status"] == "ok")]
+            values, vectors = np.linalg.eigh(np.corrcoef(ok[variables].to_numpy(dtype=float), rowvar=False))
+            values, vectors = values[::-1], vectors[:, ::-1]
+            ratios = explained[explained["line"] == line]
+            self.assertEqual(list(ratios["component"]), components)
+            np.testing.assert_allclose(ratios["explained_variance_ratio"], values / len(variables), atol=1e-12)
+            # Each component up to its sign (the report's largest entry positive).
+            overlap = np.abs(matrix.to_numpy().T @ vectors)
+            np.testing.assert_allclose(overlap, np.eye(len(variables)), atol=1e-8, err_msg=line)
+
+    def test_relaxation_points_are_the_curves_file_and_fits_count_them(self):
+        curves = pd.read_csv(REPOSITORY / "distributions/example_raw/xxt1_xxt2/relaxation_curves.csv", comment="#",
+                             float_precision="round_trip")
+        points, fits = self.results.relaxation_points, self.results.relaxation_fits
+        self.assertEqual(set(points["line"]), {"xxt1_xxt2"})
+        self.assertEqual(list(points["curve"]), list(curves["curve"]))
+        np.testing.assert_array_equal(points["t_s"], curves["t_s"])
+        # Within an ulp: the force goes through SI units and back.
+        np.testing.assert_allclose(points["F_uN"], curves["F_uN"], rtol=1e-15, atol=0)
+        self.assertEqual(list(fits["curve"]), list(dict.fromkeys(curves["curve"])))
+        self.assertEqual(points.attrs["units"]["F_uN"], "uN")
+        fitted = points.groupby("curve_index")["F_fit_uN"].count()
+        for index, fit in fits.iterrows():
+            if fit["status"] != "fit_failed":
+                self.assertEqual(fitted[index], fit["points"], fit["curve"])
+
+    def test_fit_candidates_choose_the_least_aic_law_of_fits(self):
+        candidates, fits = self.results.fit_candidates, self.results.fits
+        for _, fit in fits.iterrows():
+            tried = candidates[(candidates["variable"] == fit["variable"]) & (candidates["status"] == "ok")]
+            best = tried.loc[tried["aic"].idxmin()]
+            self.assertEqual(best["family"], fit["family"], fit["variable"])
+            self.assertEqual(best["aic"], fit["aic"])
+            np.testing.assert_allclose(tried["delta_aic"], tried["aic"] - best["aic"], atol=1e-9)
+
+    def test_repr_is_short_and_names_what_the_results_hold(self):
+        text = repr(self.results)
+        self.assertLess(len(text), 1000)
+        self.assertIn("2 lines x 40 samples, seed 7", text)
+        self.assertIn("xxt1_xxt2, wild_type", text)
+        self.assertIn(f"relaxation_points {len(self.results.relaxation_points)}x6", text)
+        self.assertIn(f"replicates {len(self.results.replicates)}x5", text)
+        self.assertNotIn("comparisons", text)  # empty here
+
+    def test_the_report_prints_fixed_for_a_median_the_bootstrap_does_not_move(self):
+        csv = pd.read_csv(self.out / "data_uncertainty.csv", float_precision="round_trip")
+        report = self.results.report
+        # The summary table (above the line saying what its intervals are) and the data-uncertainty
+        # table of the bootstrap's section: the interval is the column after the median in both.
+        tables = {"summary": report[:report.index("\ndata 95 % interval: ")],
+                  "data uncertainty": report[report.index("\ndata uncertainty of the medians"):]}
+        for name, table in tables.items():
+            rows = {(line, quantity): text for line, quantity, text in
+                    re.findall(r"^(\S+)\s+(\S+)\s+\S+(?: \S+)?\s+\S+\s+(fixed|\[[^]]+\])", table, re.MULTILINE)}
+            self.assertEqual(len(rows), len(csv), name)
+            for _, row in csv.iterrows():
+                width = row["data_ci_high"] - row["data_ci_low"]
+                text = rows[(row["line"], row["quantity"])]
+                if width <= 1e-12 * abs(row["data_ci_high"]):
+                    self.assertEqual(text, "fixed", (name, row["line"], row["quantity"]))
+                else:
+                    low, high = (float(x) for x in text.strip("[]").split(", "))
+                    self.assertAlmostEqual(low, row["data_ci_low"], delta=1e-3 * abs(row["data_ci_low"]))
+                    self.assertAlmostEqual(high, row["data_ci_high"], delta=1e-3 * abs(row["data_ci_high"]))
+            # The reference line's v is calibrated to its published (fixed) v_exp median in every replicate.
+            self.assertEqual(rows[("wild_type", "v")], "fixed", name)
+        self.assertIn("fixed: the bootstrap does not move this median", report)
+
+    def test_help_run_names_every_file_the_run_wrote(self):
+        help_text = assert_help_run_names_the_files_in(self, self.out)
+        for words in ("fidelity", "closed_form", "shell_fe", "data 95 % interval"):
+            self.assertIn(words, help_text)
 
     def test_the_readme_figure(self):
         """The Python example of the top-level README, run as written on these results."""
@@ -353,6 +484,15 @@ class FindCli(unittest.TestCase):
 
 
 
+def assert_help_run_names_the_files_in(test, directory):
+    """`growthuq help run` names every file of `directory`, a run's output; returns the help text
+    (its words joined by single spaces)."""
+    help_text = subprocess.run([growthuq.find_cli(), "help", "run"], capture_output=True, text=True, check=True).stdout
+    for name in sorted(path.name for path in Path(directory).iterdir()):
+        test.assertIn(name, help_text)
+    return " ".join(help_text.split())
+
+
 def assert_frame_is_csv(test, frame, csv):
     """Same columns, rows and values (text as text, numbers exactly, empty as NaN)."""
     test.assertEqual(list(frame.columns), list(csv.columns))
@@ -402,6 +542,8 @@ raw = {REPOSITORY}/distributions/example_raw/wild_type/raw.ini
             assert_frame_is_csv(self, results.data_uncertainty, in_campaign_order(read["data_uncertainty"], results.lines))
             self.assertEqual(list(results.comparisons["line_a"].cat.categories), ["xeg113", "wild_type"])
             self.assertEqual(list(results.letters["line"].cat.categories), ["xeg113", "wild_type"])
+            self.assertIn("letters.csv", [path.name for path in (work / "out").iterdir()])
+            assert_help_run_names_the_files_in(self, work / "out")
 
 
 if __name__ == "__main__":
