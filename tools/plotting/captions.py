@@ -16,7 +16,7 @@ FIXED = {
     "relaxation": "Force-relaxation curves of the raw-data lines (points) and their generalized Maxwell fits "
                   "(lines).",
     "force_curves": "Force-indentation curves of the raw-data lines whose k comes from force curves: recorded force "
-                    "(points), baseline offset and tilt (dashed), contact point (ring), fit window (shaded) and the "
+                    "(points), baseline offset and tilt (dashed), contact point (ring), fit window (bar along the bottom) and the "
                     "window line; right, each tube's k with its 95 % interval (k ± 1.96 u) and its curves' k (dots).",
     "tradeoff": "Errors of the medians and IQRs and the CI half-width against the sample count, and the run's "
                 "time (growthuq tradeoff).",

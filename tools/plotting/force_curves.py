@@ -1,10 +1,11 @@
 """Force-indentation curves and the stiffness per tube, for campaigns whose raw lines take k from
 force curves ([force_curves], src/forcecurves/README.md): one row per such line. Left, a few
 curves (ok ones first, each from another tube where the line has enough): the recorded force
-against stage position as points, the baseline (Eq. (C1)) dashed across the approach, the contact
-point (C3/C4) as a ring, the fit window (C6) shaded over the stage positions where the window line
-meets the window's edges, and the window line (slope k_m) on top of the baseline. Right, every
-tube's k (Eq. (C10)) with its 95 % interval, k +- 1.96 u, and the k of its ok curves as dots."""
+against stage position as faint points, the baseline (Eq. (C1)) dashed across the approach, the
+contact point (C3/C4) as a black ring, the fit window (C6) as a bar along the bottom over the
+stage positions where the window line meets the window's edges, and the window line (slope k_m,
+on top of the baseline) in the curve's colour. Right, every tube's k (Eq. (C10)) with its 95 %
+interval, k +- 1.96 u, and the k of its ok curves as dots."""
 import math
 
 import numpy as np
@@ -37,7 +38,7 @@ def _draw_curves(ax, line_name, curves):
     for index, curve in enumerate(shown):
         shade = CURVE_COLORS[index % len(CURVE_COLORS)]
         gid = f"{line_name}/{curve.name}"
-        ax.plot(curve.z_um, curve.F_uN, ".", markersize=2.0, color=shade, alpha=0.45, markeredgewidth=0,
+        ax.plot(curve.z_um, curve.F_uN, ".", markersize=2.6, color=shade, alpha=0.4, markeredgewidth=0,
                 gid=f"{gid}/data", label=f"{curve.name} (tube {curve.tube}, {curve.status})")
         ends = np.array([curve.z_um.min(), curve.z_um.max()])
         ax.plot(ends, curve.baseline_uN(ends), "--", color=shade, linewidth=0.9, gid=f"{gid}/baseline")
@@ -47,10 +48,12 @@ def _draw_curves(ax, line_name, curves):
         ax.plot([contact], [curve.baseline_uN(contact)], "o", markersize=6, markerfacecolor="none",
                 markeredgecolor="black", markeredgewidth=1.1, gid=f"{gid}/contact")
         low, high = curve.window_z_um()
-        ax.axvspan(low, high, color=shade, alpha=0.12, linewidth=0, gid=f"{gid}/window")
+        # A bar per curve along the bottom (full-height shading of several curves would blend).
+        ax.axvspan(low, high, ymin=0.03 + 0.045 * index, ymax=0.06 + 0.045 * index, color=shade, alpha=0.8,
+                   linewidth=0, gid=f"{gid}/window")
         z = np.array([low, high])
         ax.plot(z, curve.baseline_uN(z) + curve.numbers["fit_intercept_uN"] + curve.numbers["k_m_N_per_m"] * z, "-",
-                color="black", linewidth=1.6, gid=f"{gid}/fit")
+                color=shade, linewidth=2.2, gid=f"{gid}/fit")
     ok = sum(curve.status == "ok" for curve in curves)
     ax.set_xlabel(axis_label("z", "um"))
     ax.set_ylabel(axis_label("F", "uN"))
@@ -94,5 +97,5 @@ def force_curves_figure(results):
         _draw_curves(left, line.name, curves)
         _draw_tubes(right, line.name, curves, tubes)
     figure.suptitle(f"{results.campaign_name}: force curves (points), baseline (dashed), contact (ring), "
-                    "fit window (shaded) and window line; stiffness per tube", fontsize=9)
+                    "fit window (bar) and window line; stiffness per tube", fontsize=9)
     return figure
