@@ -80,7 +80,7 @@ TEST_CASE("measurement error: value + u z, z standard normal, truncated at 0; u 
 
 namespace {
 
-// Twelve tubes of two curves each, true k 2.6-3.2 N/m, with force noise `noise_uN`; their d, d0
+// Twelve tubes of two curves each, true k 2.90-3.01 N/m, with force noise `noise_uN`; their d, d0
 // and h. Writes curves.csv, sheet.csv and tubes.csv into `folder` and returns the per-tube k as
 // the campaign computes it (Eq. (C10)).
 std::vector<TubeStiffness> write_curves(const std::filesystem::path& folder, double noise_uN) {
@@ -88,7 +88,7 @@ std::vector<TubeStiffness> write_curves(const std::filesystem::path& folder, dou
   std::string tubes = "tube,d_um,d0_um,h_nm\n";
   for (int t = 0; t < 12; ++t) {
     IndentationTruth truth;
-    truth.stiffness = 2.6 + 0.05 * t;
+    truth.stiffness = 2.9 + 0.01 * t;
     truth.sensor_stiffness = 100.0;
     truth.approach_samples = 300;
     truth.noise = noise_uN * 1e-6;
@@ -123,7 +123,7 @@ std::string raw_ini(const std::string& force_curves_keys, bool k_column) {
 }
 
 DataUncertainty bootstrap_of(const std::filesystem::path& folder, const std::string& raw_name) {
-  const std::string text = "[campaign]\nname = curved\nseed = 3\nsamples = 200\noutputs = p\noutput_dir = out\nformats = csv\n"
+  const std::string text = "[campaign]\nname = curved\nseed = 3\nsamples = 200\noutputs = k\noutput_dir = out\nformats = csv\n"
                            "[instrument]\nprobe_radius_um = 0.5\n[line curved]\nraw = " + raw_name +
                            "\nrank_correlation = none\n[data_uncertainty]\nreplicates = 200\nsamples = 400\n";
   const PreparedCampaign prepared(parse_campaign(text, (folder / ("campaign_" + raw_name)).string()));
@@ -136,7 +136,7 @@ DataUncertainty bootstrap_of(const std::filesystem::path& folder, const std::str
 
 TEST_CASE("measurement error in the data bootstrap: none is the plain bootstrap bit for bit; bootstrap widens the interval and says so") {
   const ScratchDirectory folder("measurement_error");
-  // Noise 0.15 uN: each tube's u is a sizeable part of the tubes' spread.
+  // Noise 0.15 uN on tubes of nearly one k: each tube's u is most of the tubes' spread.
   const std::vector<TubeStiffness> tubes = write_curves(folder.root, 0.15);
   std::string k = "tube,k_N_per_m\n";
   double u_mean = 0.0;
@@ -166,13 +166,16 @@ TEST_CASE("measurement error in the data bootstrap: none is the plain bootstrap 
   for (const double value : values) mean += value / static_cast<double>(values.size());
   for (const double value : values) spread += (value - mean) * (value - mean) / static_cast<double>(values.size() - 1);
   spread = std::sqrt(spread);
-  MESSAGE("tubes' k spread " << spread << " N/m, mean u " << u_mean << " N/m; p data interval width: none "
-                             << none.high - none.low << ", bootstrap " << with_error.high - with_error.low << " MPa; sd of the "
-                             << "replicate medians " << none.sd << " and " << with_error.sd);
-  // The replicate's k values scatter by sqrt(s^2 + u^2) instead of s: the medians' sd grows by
-  // about sqrt(1 + u^2 / s^2) (Monte Carlo error of the replicates and of p's other inputs aside).
-  CHECK(u_mean > 0.3 * spread);
-  CHECK(with_error.sd > none.sd * 1.05);
+  MESSAGE("tubes' k spread " << spread << " N/m, mean u " << u_mean << " N/m; k data interval width: none "
+                             << none.high - none.low << ", bootstrap " << with_error.high - with_error.low << " N/m; sd of the "
+                             << "replicate medians " << none.sd << " and " << with_error.sd << " (ratio "
+                             << with_error.sd / none.sd << ", expected about " << std::sqrt(1.0 + u_mean * u_mean / (spread * spread))
+                             << ")");
+  // A replicate's k values scatter by sqrt(s^2 + u^2) instead of s, so the replicate medians' sd
+  // grows by about sqrt(1 + u^2 / s^2), here about 1.3 (the sd of 200 replicates has a relative
+  // standard error of 5 %; the replicates' Monte Carlo error, 400 samples, is small beside it).
+  CHECK(u_mean > 0.5 * spread);
+  CHECK(with_error.sd > none.sd * 1.12);
   CHECK(with_error.high - with_error.low > none.high - none.low);
 }
 
@@ -186,6 +189,7 @@ TEST_CASE("measurement error: the bootstrap's sources say the interval includes 
   const PreparedCampaign prepared(parse_campaign(text, (folder.root / "c.ini").string()));
   const std::vector<std::string> sources = data_uncertainty_sources(prepared);
   REQUIRE(sources.size() == 1);
+  INFO(sources[0]);
   CHECK(sources[0].find("k (n = 12, each drawn within its tube's measurement uncertainty: the interval includes measurement "
                         "error)") != std::string::npos);
 
