@@ -68,7 +68,8 @@ def _draw_tubes(ax, line_name, curves, tubes):
     k = np.array([tube.k_N_per_m for tube in fitted])
     u = np.array([tube.u_N_per_m for tube in fitted])
     drawn = ax.errorbar(position, k, yerr=Z_95 * u, fmt="o", markersize=3, color="black", elinewidth=1.0, capsize=2,
-                        gid=f"{line_name}/tubes", label="tube k, 95 % interval (k ± 1.96 u)")
+                        label="tube k, 95 % interval (k ± 1.96 u)")
+    drawn.lines[0].set_gid(f"{line_name}/tubes")  # (a gid given to errorbar would go to the caps too)
     drawn.lines[2][0].set_gid(f"{line_name}/tubes/interval")
     by_tube = {tube.name: i for i, tube in enumerate(fitted)}
     dots = [(by_tube[c.tube], c.numbers["k_N_per_m"]) for c in curves if c.status == "ok" and c.tube in by_tube]
