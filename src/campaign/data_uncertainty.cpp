@@ -30,6 +30,7 @@ LineDistributions refitted_line(const PreparedLine& line, std::uint64_t key) {
   for (const VariableFit& fit : line.raw_fit->variables) {
     std::vector<double> values =
         parametric_resample(fit.best().distribution, fit.values.size(), key, line.campaign_line.name, fit.variable);
+    if (!fit.uncertainties.empty()) add_measurement_error(values, fit.uncertainties, key, line.campaign_line.name, fit.variable);
     refits.push_back(fit_variable_by_aic(fit.variable, *fit.unit, std::move(values), fit.families, fit.source,
                                          "data uncertainty, line " + line.campaign_line.name));
   }
@@ -164,7 +165,15 @@ struct LayoutRow {
   std::string quantity;
   std::string unit;
   bool resampled = false;
+  bool measurement_error = false;
 };
+
+// Whether a replicate draws some of the line's values within their measurement uncertainty.
+bool draws_measurement_error(const PreparedLine& line) {
+  if (!line.raw_fit) return false;
+  return std::any_of(line.raw_fit->variables.begin(), line.raw_fit->variables.end(),
+                     [](const VariableFit& fit) { return !fit.uncertainties.empty(); });
+}
 
 std::vector<LayoutRow> bootstrap_layout(const PreparedCampaign& campaign) {
   std::vector<LayoutRow> rows;
@@ -173,7 +182,7 @@ std::vector<LayoutRow> bootstrap_layout(const PreparedCampaign& campaign) {
       // Only raw-data lines are compared: a line file's laws are fixed, or redrawn only where they
       // state tubes (the shipped ones for k alone), so its interval is a lower bound.
       rows.push_back({line.campaign_line.name, output.quantity, std::string(output_unit(line, output).symbol),
-                      line.raw_fit != nullptr});
+                      line.raw_fit != nullptr, draws_measurement_error(line)});
     }
   }
   return rows;
@@ -238,6 +247,7 @@ DataUncertaintyResult summarize_replicates(const PreparedCampaign& campaign, con
     row.replicate_medians = values;
     row.replicate_indices = indices[r];
     row.resampled = layout[r].resampled;
+    row.measurement_error = layout[r].measurement_error;
     row.replicates = values.size();
     row.failed = replicates.size() - values.size();
     if (values.size() >= 2) {
@@ -295,7 +305,10 @@ std::vector<std::string> data_uncertainty_sources(const PreparedCampaign& campai
     for (const LineVariable& variable : variables) {
       if (line.raw_fit) {
         for (const VariableFit& fit : line.raw_fit->variables) {
-          if (fit.variable == variable.name) redrawn = listed(redrawn, variable.name + " (n = " + std::to_string(fit.values.size()) + ")");
+          if (fit.variable != variable.name) continue;
+          redrawn = listed(redrawn, variable.name + " (n = " + std::to_string(fit.values.size()) +
+                                        (fit.uncertainties.empty() ? ")" : ", each drawn within its tube's measurement "
+                                                                           "uncertainty: the interval includes measurement error)"));
         }
       } else if (variable.tubes > 0) {
         redrawn = listed(redrawn, variable.name + " (tubes = " + std::to_string(variable.tubes) + ", " +

@@ -7,6 +7,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/distributions/fit.hpp"
+#include "growthuq/distributions/standard_normal.hpp"
 #include "growthuq/sampling/random_stream.hpp"
 
 namespace growthuq {
@@ -17,6 +18,28 @@ std::vector<double> parametric_resample(const Distribution& law, std::size_t cou
   std::vector<double> values(count);
   for (double& value : values) value = quantile(law, stream.uniform_open());
   return values;
+}
+
+void add_measurement_error(std::vector<double>& values, const std::vector<double>& uncertainties,
+                           std::uint64_t replicate_key, std::string_view line, std::string_view variable) {
+  if (uncertainties.size() != values.size()) throw std::logic_error("one measurement uncertainty per value expected");
+  RandomStream stream(derive_key(replicate_key, std::string(line) + "/" + std::string(variable) + "/measurement_error"));
+  // A redraw almost never happens (k - 0 is many u away); the cap only guards a u far above k.
+  constexpr int max_draws = 1000;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (uncertainties[i] == 0.0) continue;
+    double drawn = 0.0;
+    for (int draw = 0; draw < max_draws && !(drawn > 0.0); ++draw) {
+      drawn = values[i] + uncertainties[i] * standard_normal_quantile(stream.uniform_open());
+    }
+    if (!(drawn > 0.0)) {
+      throw InputError("data uncertainty, line " + std::string(line),
+                       std::string(variable) + " = " + std::to_string(values[i]) + " with measurement uncertainty " +
+                           std::to_string(uncertainties[i]) + ": no positive draw in " + std::to_string(max_draws) +
+                           " (expected u well below the value)");
+    }
+    values[i] = drawn;
+  }
 }
 
 bool states_tubes(const LineDistributions& line) {

@@ -23,6 +23,15 @@ namespace growthuq {
 std::vector<double> parametric_resample(const Distribution& law, std::size_t count, std::uint64_t replicate_key,
                                         std::string_view line, std::string_view variable);
 
+// Each value of `values` drawn within its measurement uncertainty (same unit, one per value), for
+// a raw line whose k comes from force curves ([force_curves] measurement_error = bootstrap,
+// src/forcecurves/README.md, Eq. (C11)): value_i + u_i z_i, z_i standard normal, a non-positive
+// result drawn again (a normal truncated at 0). The stream is
+// RandomStream(derive_key(replicate_key, line + "/" + variable + "/measurement_error")), apart from
+// the resample's own, so u = 0 leaves the values exactly as they were.
+void add_measurement_error(std::vector<double>& values, const std::vector<double>& uncertainties,
+                           std::uint64_t replicate_key, std::string_view line, std::string_view variable);
+
 // True when a variable of `line` states tubes (the line's laws move in the bootstrap).
 bool states_tubes(const LineDistributions& line);
 

@@ -152,10 +152,72 @@ void write_relaxation(ResultsH5Writer& h5, const std::string& line, const RawLin
   h5.write_attribute(group, "curves_path", fit.raw.relaxation.curves);
 }
 
+// The force curves of [force_curves] as processed: one row per curve, one per tube, and the
+// approaches' points, for the force-curve figure (tools/plotting/force_curves.py).
+void write_force_curves(ResultsH5Writer& h5, const std::string& line, const RawLineFit& fit) {
+  const ForceCurveFits& force_curves = *fit.force_curves;
+  std::vector<ExtraColumn> table{
+      {"curve"}, {"tube"}, pure_number("repetition"), {"status"}, {"reason"},
+      {.name = "baseline_offset_uN", .unit = "uN"}, {.name = "baseline_tilt_N_per_m", .unit = "N/m"},
+      {.name = "contact_z_um", .unit = "um"}, {.name = "window_low_uN", .unit = "uN"},
+      {.name = "window_high_uN", .unit = "uN"}, {.name = "k_m_N_per_m", .unit = "N/m"},
+      {.name = "fit_intercept_uN", .unit = "uN"}, {.name = "k_N_per_m", .unit = "N/m"},
+      {.name = "u_N_per_m", .unit = "N/m"}};
+  std::vector<std::int32_t> curve_index;
+  std::vector<double> position, force;
+  for (std::size_t c = 0; c < force_curves.curves.size(); ++c) {
+    const CurveResult& r = force_curves.curves[c];
+    const bool ok = r.status == CurveStatus::ok;
+    table[0].text.push_back(r.curve);
+    table[1].text.push_back(r.tube);
+    table[2].integer.push_back(r.repetition);
+    table[3].text.emplace_back(to_string(r.status));
+    table[4].text.push_back(r.reason);
+    table[5].real.push_back(to_uN(r.baseline_offset_N));
+    table[6].real.push_back(r.baseline_tilt_N_per_m);
+    table[7].real.push_back(ok ? to_um(r.contact_position_m) : nan);
+    table[8].real.push_back(ok ? to_uN(r.window_low_N) : nan);
+    table[9].real.push_back(ok ? to_uN(r.window_high_N) : nan);
+    table[10].real.push_back(ok ? r.measured_stiffness : nan);
+    table[11].real.push_back(ok ? to_uN(r.fit_intercept_N) : nan);
+    table[12].real.push_back(ok ? r.stiffness : nan);
+    table[13].real.push_back(ok ? r.uncertainty : nan);
+    const ForceCurve& data = force_curves.data[c];
+    for (std::size_t i = 0; i < data.approach_end; ++i) {
+      curve_index.push_back(static_cast<std::int32_t>(c));
+      position.push_back(to_um(data.position[i]));
+      force.push_back(to_uN(data.force[i]));
+    }
+  }
+  std::vector<ExtraColumn> tubes{{"tube"}, pure_number("curves"), pure_number("ok"), {.name = "k_N_per_m", .unit = "N/m"},
+                                 {.name = "spread_N_per_m", .unit = "N/m"}, {.name = "u_N_per_m", .unit = "N/m"}};
+  for (const TubeStiffness& tube : force_curves.tubes) {
+    tubes[0].text.push_back(tube.tube);
+    tubes[1].integer.push_back(static_cast<std::int64_t>(tube.curves));
+    tubes[2].integer.push_back(static_cast<std::int64_t>(tube.ok));
+    tubes[3].real.push_back(tube.ok > 0 ? tube.stiffness : nan);
+    tubes[4].real.push_back(tube.ok > 0 ? tube.spread : nan);
+    tubes[5].real.push_back(tube.ok > 0 ? tube.uncertainty : nan);
+  }
+  const std::string group = "lines/" + line + "/force_curves";
+  const bool relative = fit.raw.force_curves.options.window.convention == WindowConvention::relative;
+  h5.write_table(group + "/curves", table);
+  h5.write_table(group + "/tubes", tubes);
+  h5.write_array(group + "/points/curve_index", curve_index, "1", "point");
+  h5.write_array(group + "/points/z_um", position, "um", "point");
+  h5.write_array(group + "/points/F_uN", force, "uN", "point");
+  h5.write_attribute(group, "curves_path", fit.raw.force_curves.curves);
+  h5.write_attribute(group, "window", std::string(relative ? "relative" : "absolute"));
+}
+
+// "included" when the line's values were drawn within their measurement uncertainty, else "none".
+const char* measurement_error_cell(const DataUncertainty& row) { return row.measurement_error ? "included" : "none"; }
+
 std::vector<ExtraColumn> uncertainty_table(std::span<const DataUncertainty> rows) {
   std::vector<ExtraColumn> table{{"line"}, {"quantity"}, {"unit"}, {"median"}, {"median_ci_low"}, {"median_ci_high"},
                                  {"data_ci_low"}, {"data_ci_high"}, {"data_sd"}, pure_number("replicates"),
-                                 pure_number("failed_replicates"), pure_number("samples_per_replicate")};
+                                 pure_number("failed_replicates"), pure_number("samples_per_replicate"),
+                                 {"measurement_error"}};
   for (const DataUncertainty& row : rows) {
     table[0].text.push_back(row.line);
     table[1].text.push_back(row.quantity);
@@ -169,6 +231,7 @@ std::vector<ExtraColumn> uncertainty_table(std::span<const DataUncertainty> rows
     table[9].integer.push_back(static_cast<std::int64_t>(row.replicates));
     table[10].integer.push_back(static_cast<std::int64_t>(row.failed));
     table[11].integer.push_back(static_cast<std::int64_t>(row.samples));
+    table[12].text.emplace_back(measurement_error_cell(row));
   }
   return table;
 }
@@ -179,7 +242,9 @@ constexpr const char* method_text =
     "values) and refits it within its family (maximum likelihood), keeps the other laws, reruns the campaign's "
     "models with its own seed and takes the median; data_ci_low/high are the 2.5 and 97.5 % quantiles of the replicate medians (percentile interval). It "
     "holds the uncertainty from fitting finitely many tubes; median_ci_low/high hold the Monte Carlo error only (for "
-    "the v of a line other than the reference line also kappa's).";
+    "the v of a line other than the reference line also kappa's). measurement_error = included: the line's k of force "
+    "curves was also drawn within each tube's measurement uncertainty u in each replicate, so the interval includes "
+    "measurement error.";
 
 std::string uncertainty_report(std::span<const DataUncertainty> rows, const Campaign& campaign) {
   if (rows.empty()) return {};
@@ -217,11 +282,13 @@ void add_data_intervals(std::span<QuantitySummary> summaries, std::span<const Da
 
 std::string data_uncertainty_csv_text(std::span<const DataUncertainty> rows) {
   CsvWriter writer({"line", "quantity", "unit", "median", "median_ci_low", "median_ci_high", "data_ci_low",
-                    "data_ci_high", "data_sd", "replicates", "failed_replicates", "samples_per_replicate"});
+                    "data_ci_high", "data_sd", "replicates", "failed_replicates", "samples_per_replicate",
+                    "measurement_error"});
   for (const DataUncertainty& row : rows) {
     writer.add_row({row.line, row.quantity, row.unit, number_cell(row.median), number_cell(row.median_ci_low),
                     number_cell(row.median_ci_high), number_cell(row.low), number_cell(row.high), number_cell(row.sd),
-                    std::to_string(row.replicates), std::to_string(row.failed), std::to_string(row.samples)});
+                    std::to_string(row.replicates), std::to_string(row.failed), std::to_string(row.samples),
+                    measurement_error_cell(row)});
   }
   return writer.text();
 }
@@ -236,6 +303,7 @@ std::string write_raw_data_outputs(const PreparedCampaign& campaign, std::span<c
     if (h5 != nullptr) {
       write_fits(*h5, line.campaign_line.name, *line.raw_fit);
       if (line.raw_fit->relaxation) write_relaxation(*h5, line.campaign_line.name, *line.raw_fit);
+      if (line.raw_fit->force_curves) write_force_curves(*h5, line.campaign_line.name, *line.raw_fit);
     }
   }
 

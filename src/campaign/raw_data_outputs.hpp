@@ -26,11 +26,22 @@
 //                                      fits table), t_s, F_uN (data), F_fit_uN (the fitted model at
 //                                      the point, relaxation/analysis.hpp fitted_force; NaN before
 //                                      the force maximum for the step fit)
+//   /lines/<line>/force_curves/curves  one row per force curve ([force_curves]): curve, tube, repetition,
+//                                      status, reason, baseline_offset_uN, baseline_tilt_N_per_m, and
+//                                      for an ok curve (NaN otherwise) contact_z_um, window_low_uN,
+//                                      window_high_uN (forces above the baseline), k_m_N_per_m and
+//                                      fit_intercept_uN (the window line: F - baseline = intercept +
+//                                      k_m z), k_N_per_m, u_N_per_m; attributes curves_path, window
+//   /lines/<line>/force_curves/tubes   one row per tube: tube, curves, ok, k_N_per_m, spread_N_per_m,
+//                                      u_N_per_m (Eq. (C10), NaN without an ok curve)
+//   /lines/<line>/force_curves/points/ the approaches in long format on the dimension `point`:
+//                                      curve_index (int32, row of curves), z_um, F_uN (as recorded)
 //   /data_uncertainty                  one row per line and output: line, quantity, unit, median,
 //                                      median_ci_low, median_ci_high (the Monte Carlo CI of
 //                                      summary.csv), data_ci_low, data_ci_high, data_sd,
-//                                      replicates, failed_replicates, samples_per_replicate
-//                                      (attribute method); also under /lines/<line>/data_uncertainty
+//                                      replicates, failed_replicates, samples_per_replicate,
+//                                      measurement_error ("included": k of force curves was also
+//                                      drawn within each tube's uncertainty; "none") (attribute method); also under /lines/<line>/data_uncertainty
 //   /lines/<line>/data_uncertainty_replicates/<quantity>   float64, the successful replicates'
 //                                      medians (attributes unit and units, dimension replicate),
 //                                      for plots and other intervals

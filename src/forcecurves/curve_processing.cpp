@@ -224,6 +224,7 @@ CurveResult process_force_curve(const ForceCurve& curve, const CurveProcessingOp
                     uN(result.window_high_N) + "]: expected at least " + std::to_string(options.minimum_window_samples));
   }
   result.measured_stiffness = fit.slope;
+  result.fit_intercept_N = fit.intercept;
   result.r_squared = fit.r_squared();
   if (!(fit.slope > 0.0)) {
     return fail(result, CurveStatus::non_monotonic, "the window's slope " + format_double(fit.slope) + " N/m is not positive");

@@ -1,12 +1,15 @@
 // read_force_curves and the writers of force_curve.hpp; the format is documented in
 // distributions/README.md, "Force curves".
 #include <algorithm>
+#include <array>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 #include <map>
 #include <optional>
 #include <set>
+#include <system_error>
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -273,16 +276,35 @@ std::vector<ForceCurve> read_force_curves(const std::string& curves_path, const 
   return curves;
 }
 
-std::string force_curves_csv(const std::vector<ForceCurve>& curves) {
+namespace {
+
+// `value` with at most `decimals` decimals, trailing zeros dropped ("0.297", "12", "-0.0031");
+// exact (format_double) for decimals < 0.
+std::string rounded_cell(double value, int decimals) {
+  if (decimals < 0) return format_double(value);
+  std::array<char, 64> text{};
+  const auto [end, error] = std::to_chars(text.data(), text.data() + text.size(), value, std::chars_format::fixed, decimals);
+  if (error != std::errc()) return format_double(value);
+  std::string cell(text.data(), end);
+  if (cell.find('.') != std::string::npos) {
+    cell.erase(cell.find_last_not_of('0') + 1);
+    if (cell.back() == '.') cell.pop_back();
+  }
+  return cell == "-0" ? "0" : cell;
+}
+
+}  // namespace
+
+std::string force_curves_csv(const std::vector<ForceCurve>& curves, int decimals) {
   const bool timed = std::all_of(curves.begin(), curves.end(), [](const ForceCurve& c) { return !c.time.empty(); });
   std::vector<std::string> header{"curve", "z_um", "F_uN", "segment"};
   if (timed) header.insert(header.begin() + 1, "t_s");
   CsvWriter writer(header);
   for (const ForceCurve& curve : curves) {
     for (std::size_t i = 0; i < curve.position.size(); ++i) {
-      std::vector<std::string> row{curve.name, format_double(to_um(curve.position[i])), format_double(to_uN(curve.force[i])),
-                                   i < curve.approach_end ? "approach" : "retract"};
-      if (timed) row.insert(row.begin() + 1, format_double(curve.time[i]));
+      std::vector<std::string> row{curve.name, rounded_cell(to_um(curve.position[i]), decimals),
+                                   rounded_cell(to_uN(curve.force[i]), decimals), i < curve.approach_end ? "approach" : "retract"};
+      if (timed) row.insert(row.begin() + 1, rounded_cell(curve.time[i], decimals));
       writer.add_row(row);
     }
   }

@@ -119,7 +119,8 @@ RawRelaxation read_relaxation(const IniDocument& document, const IniSection& sec
 RawForceCurves read_force_curves_section(const IniDocument& document, const IniSection& section) {
   RawForceCurves force_curves;
   force_curves.line = section.line;
-  reject_unknown_keys(document, section, {"curves", "sheet", "window", "window_uN", "contact", "families"});
+  reject_unknown_keys(document, section,
+                      {"curves", "sheet", "window", "window_uN", "contact", "measurement_error", "families"});
   force_curves.curves = existing_file(
       document, required_entry(document, section, "curves", "curves = <CSV curve,z_um,F_uN (distributions/README.md)>"));
   force_curves.sheet = existing_file(
@@ -144,6 +145,12 @@ RawForceCurves read_force_curves_section(const IniDocument& document, const IniS
   }
   if (const std::string reason = options.invalid_reason(); !reason.empty()) {
     throw InputError(document.location(forces ? forces->line : section.line), "[force_curves]: " + reason);
+  }
+  if (const IniEntry* error = section.find("measurement_error")) {
+    if (error->value != "bootstrap" && error->value != "none") {
+      throw_bad_value(document.location(error->line), "measurement_error", error->value, "bootstrap or none");
+    }
+    force_curves.measurement_error = error->value == "bootstrap";
   }
   force_curves.families = families_of(document, section, false);
   return force_curves;

@@ -229,13 +229,14 @@ RawLineFit fit_raw_line(const RawLineFile& raw, const RawFitSettings& settings) 
     // k per tube: the mean of its ok curves (Eq. (C10), src/forcecurves/README.md).
     const RawForceCurves& source = raw.force_curves;
     ForceCurveFits fits;
-    for (const ForceCurve& curve : read_force_curves(source.curves, source.sheet)) {
-      fits.curves.push_back(process_force_curve(curve, source.options));
-    }
+    fits.data = read_force_curves(source.curves, source.sheet);
+    for (const ForceCurve& curve : fits.data) fits.curves.push_back(process_force_curve(curve, source.options));
     fits.tubes = tube_stiffness(fits.curves);
-    std::vector<double> k;
+    std::vector<double> k, u;
     for (const TubeStiffness& tube : fits.tubes) {
-      if (tube.ok > 0) k.push_back(tube.stiffness);
+      if (tube.ok == 0) continue;
+      k.push_back(tube.stiffness);
+      u.push_back(tube.uncertainty);
     }
     const std::string location = file_location(raw.path, source.line);
     if (k.size() < 2) {
@@ -246,6 +247,7 @@ RawLineFit fit_raw_line(const RawLineFile& raw, const RawFitSettings& settings) 
     const std::string described = "k per tube of " + source.curves + ", " + std::to_string(k.size()) + " of " +
                                   std::to_string(fits.tubes.size()) + " tubes with an ok curve";
     result.variables.push_back(fit_variable_by_aic("k", unit_named("N/m"), std::move(k), source.families, described, location));
+    if (source.measurement_error) result.variables.back().uncertainties = std::move(u);
     result.force_curves = std::move(fits);
   }
   result.distributions = line_distributions_of(raw, result.variables);

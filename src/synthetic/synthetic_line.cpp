@@ -239,6 +239,11 @@ struct ForceCurveFiles {
   std::string truth;
 };
 
+// The force curves' t_s, z_um and F_uN are written with 4 decimals (0.1 ms, 0.1 nm, 0.1 nN), as
+// an instrument records them: the file is a third of its exact size, and the rounding's error
+// (sd 0.03 nN) is far below the force noise (0.01 uN by default).
+constexpr int recorded_decimals = 4;
+
 // Raw force curves of the indented tubes, force_curve_repetitions per tube, each from the tube's
 // true k with its own contact point and noise.
 ForceCurveFiles force_curve_files(const LineDistributions& truth, const SynthSettings& settings,
@@ -262,11 +267,15 @@ ForceCurveFiles force_curve_files(const LineDistributions& truth, const SynthSet
       IndentationTruth curve_truth = shape;
       curve_truth.stiffness = stiffness[tube];
       curve_truth.probe_radius = settings.instrument.probe_radius_m;
-      // Contact 1.2-1.8 um into the travel; the stage turns back at the set force, as the
-      // instrument's protocol does, so every tube spans the fit window whatever its k.
-      curve_truth.contact = shape.start + from_um(1.2 + 0.6 * contacts.uniform_open());
-      curve_truth.end = curve_truth.contact + force_curve_set_point / measured_stiffness(curve_truth.stiffness, Instrument{
-                                                                          curve_truth.probe_radius, 0.2, shape.sensor_stiffness});
+      // The stage turns back at the set force, as the instrument's protocol does, so every tube
+      // spans the fit window whatever its k. Contact after 40-60 % of the approach: a soft tube's
+      // long travel in contact would otherwise put the contact inside the baseline region (the
+      // leading 25 % of the approach, Eq. (C1)).
+      const double in_contact = force_curve_set_point / measured_stiffness(curve_truth.stiffness, Instrument{
+                                                            curve_truth.probe_radius, 0.2, shape.sensor_stiffness});
+      const double share = 0.4 + 0.2 * contacts.uniform_open();
+      curve_truth.contact = shape.start + in_contact * share / (1.0 - share);
+      curve_truth.end = curve_truth.contact + in_contact;
       const std::string tube_name = two_digit_name("I", tube);
       const std::string name = tube_name + "_r" + std::to_string(r);
       curves.push_back(simulate_indentation_curve(curve_truth, counter_bits(noise_key, curves.size()), name, tube_name,
@@ -275,8 +284,9 @@ ForceCurveFiles force_curve_files(const LineDistributions& truth, const SynthSet
                      format_double(to_um(curve_truth.contact)) + "\n";
     }
   }
-  files.curves = common + "# Read with: growthuq curves force_curves.csv --sheet force_curves_sheet.csv --out K.csv\n" +
-                 force_curves_csv(curves);
+  files.curves = common + "# Recorded to 0.1 nm, 0.1 nN and 0.1 ms, an instrument's resolution.\n"
+                          "# Read with: growthuq curves force_curves.csv --sheet force_curves_sheet.csv --out K.csv\n" +
+                 force_curves_csv(curves, recorded_decimals);
   files.sheet = common + curve_sheet_csv(curves);
   return files;
 }

@@ -31,7 +31,8 @@ with h5py.File(results + "/results.h5", "r") as f:
     for field in ["variable", "family", "parameters", "n", "log_likelihood", "aic", "ks", "ad", "unit", "source"]:
         expect(field in fits.dtype.names, "fits field " + field)
     variables = [text(v) for v in fits["variable"]]
-    expect(variables == ["k", "d", "d0", "h", "v_exp", "tau", "einf"], "fitted variables " + str(variables))
+    # k of force curves comes after the measurements and the relaxation's tau and einf.
+    expect(variables == ["d", "d0", "h", "v_exp", "tau", "einf", "k"], "fitted variables " + str(variables))
     counts = {"k": len(table(raw + "/indentation.csv")), "d0": len(table(raw + "/plasmolysis.csv")),
               "h": len(table(raw + "/tem_sections.csv")), "v_exp": len(table(raw + "/growth.csv"))}
     for row in fits:
@@ -129,6 +130,24 @@ with h5py.File(results + "/results.h5", "r") as f:
     expect(worst < 0.005, "fitted model follows the ok curves (worst rms %.4f of the peak force)" % worst)
     expect("fits" not in f["lines/pme48"], "no fits for a line given by its line file")
 
+    # The force curves: one row per curve of the sheet, in its order, the approaches' samples as in
+    # the file, every tube's k the mean of its ok curves and the n of k's law (Eq. (C10)).
+    force_curves = wt["force_curves"]
+    sheet = table(raw + "/force_curves_sheet.csv")
+    rows = force_curves["curves"][:]
+    expect([text(c) for c in rows["curve"]] == [r["curve"] for r in sheet], "one force-curve row per curve, in order")
+    approach = [r for r in table(raw + "/force_curves.csv") if r["segment"] == "approach"]
+    z = force_curves["points"]["z_um"][:]
+    expect(len(z) == len(approach), "every approach sample of the force curves")
+    expect(np.allclose(z, [float(r["z_um"]) for r in approach], rtol=0, atol=1e-12), "z_um as in the file")
+    tubes = force_curves["tubes"][:]
+    ok = [text(s) == "ok" for s in rows["status"]]
+    for tube in tubes:
+        mine = [o and text(t) == text(tube["tube"]) for o, t in zip(ok, rows["tube"])]
+        expect(abs(np.mean(rows["k_N_per_m"][mine]) - tube["k_N_per_m"]) <= 1e-12 * tube["k_N_per_m"], "tube k is its curves' mean")
+    expect(fits[variables.index("k")]["n"] == np.sum(tubes["ok"] > 0), "k fitted to the tubes with an ok curve")
+    expect(fits[variables.index("k")]["n"] == counts["k"], "every indented tube has an ok curve")
+
     uncertainty = f["data_uncertainty"][:]
     summary = {(r["line"], r["quantity"]): r for r in table(results + "/summary.csv")}
     csv_rows = table(results + "/data_uncertainty.csv")
@@ -136,6 +155,11 @@ with h5py.File(results + "/results.h5", "r") as f:
     for row, csv_row in zip(uncertainty, csv_rows):
         key = (text(row["line"]), text(row["quantity"]))
         expect(key == (csv_row["line"], csv_row["quantity"]), "same rows in CSV and HDF5")
+        # wild_type's k comes from force curves, drawn within each tube's u (the default): its
+        # interval includes measurement error; pme48's line file has none to draw.
+        included = "included" if key[0] == "wild_type" else "none"
+        expect(csv_row["measurement_error"] == included and text(row["measurement_error"]) == included,
+               "measurement_error of " + str(key))
         expect(row["median"] == float(summary[key]["median"]), "median as in summary.csv " + str(key))
         expect(row["data_ci_low"] <= row["data_ci_high"], "ordered interval " + str(key))
         expect(abs(row["data_ci_low"] - float(csv_row["data_ci_low"])) <= 1e-15 * abs(row["data_ci_low"]), "CSV interval")

@@ -234,6 +234,7 @@ class CommandLine(unittest.TestCase):
                          ["boxes", "growth_rate"] + [s for s in stems if s.startswith("correlogram_")] + ["sensitivity"])
         self.assertIn("Box q1-q3, line at the median, whiskers 10-90 %.", captions[0])
         self.assertRegex(completed.stdout, r"note: skipped relaxation curves: .*relaxation")
+        self.assertRegex(completed.stdout, r"note: skipped force curves: .*force_curves")
         self.assertRegex(completed.stdout, r"note: skipped trade plot: no .*tradeoff\.csv")
         status = Shared.reference.status
         flagged = {line: int((status[line] != "ok").sum()) for line in Shared.reference.lines}
@@ -432,6 +433,107 @@ class DataIntervals(unittest.TestCase):
                 label = one(self.figure, f"{line}/{quantity}/n").get_text()
                 flagged = 300 - self.reference.counted(line, quantity).size
                 self.assertEqual(label, f"{flagged} flagged" if flagged else "", (line, quantity))
+
+
+class ForceCurves(unittest.TestCase):
+    """The force-curve figure of a real campaign: `growthuq synth` draws the wild type with two
+    force curves per indented tube, its raw.ini takes k from them, `growthuq run` stores the
+    processed curves in results.h5 and `tools/plot --figures force_curves` draws them. What was
+    drawn is read back against results.h5 read here with h5py, and the window line against numpy's
+    polyfit of the baselined points in the window (an independent fit of the same samples)."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.directory = Shared.tmp / "force-curves"
+        data = cls.directory / "data"
+        done = run([OPTIONS.cli, "synth", SOURCE / "distributions" / "wild_type.ini", "--seed", 7, "--tubes", "12:12",
+                    "--curves", "3:3", "--force-curves", 2, "--curve-samples", 300, "--out", data])
+        if done.returncode != 0:
+            raise RuntimeError(f"growthuq synth failed: {done.stderr}")
+        campaign = cls.directory / "curves.ini"
+        campaign.write_text("[campaign]\nname = curves\nseed = 3\nsamples = 100\noutputs = p, E\noutput_dir = out\n"
+                            "formats = hdf5\n[instrument]\nprobe_radius_um = 0.5\n[line wild_type]\n"
+                            f"raw = {data / 'wild_type' / 'raw.ini'}\nrank_correlation = none\n"
+                            "[data_uncertainty]\nreplicates = 0\n")
+        cls.out = cls.directory / "out"
+        done = run([OPTIONS.cli, "run", campaign, "--out", cls.out, "--quiet"])
+        if done.returncode != 0:
+            raise RuntimeError(f"growthuq run failed: {done.stderr}")
+        cls.plot_run = plot_command(cls.out, "--figures", "force_curves")
+        with h5py.File(cls.out / "results.h5", "r") as h5:
+            group = h5["lines/wild_type/force_curves"]
+            cls.curves = group["curves"][()]
+            cls.tubes = group["tubes"][()]
+            cls.points = {name: group["points"][name][()] for name in ("curve_index", "z_um", "F_uN")}
+        cls.figure = PLOTTING.force_curves.force_curves_figure(PLOTTING.results.read_results(cls.out / "results.h5"))
+
+    def test_the_command_writes_the_figure(self):
+        self.assertEqual(self.plot_run.returncode, 0, self.plot_run.stderr)
+        assert_valid_png(self, self.out / "plots" / "force_curves.png")
+        assert_valid_pdf(self, self.out / "plots" / "force_curves.pdf")
+        self.assertIn("**force_curves**: Force-indentation curves", (self.out / "plots" / "captions.md").read_text())
+
+    def test_curves_baseline_contact_window_and_window_line(self):
+        curve_axes, tube_axes = self.figure.axes
+        self.assertEqual((curve_axes.get_xlabel(), curve_axes.get_ylabel()), ("z (µm)", "F (µN)"))
+        names = [as_text(n) for n in self.curves["curve"]]
+        statuses = [as_text(n) for n in self.curves["status"]]
+        tubes = [as_text(n) for n in self.curves["tube"]]
+        drawn = [l.get_gid().split("/")[1] for l in curve_axes.lines if (l.get_gid() or "").endswith("/data")]
+        # Ok curves of distinct tubes first, in file order.
+        expected, seen = [], set()
+        for name, status, tube in zip(names, statuses, tubes):
+            if status == "ok" and tube not in seen:
+                seen.add(tube)
+                expected.append(name)
+        self.assertEqual(drawn, expected[:3])
+        for name in drawn:
+            row = self.curves[names.index(name)]
+            mine = self.points["curve_index"] == names.index(name)
+            z, force = self.points["z_um"][mine], self.points["F_uN"][mine]
+            data = one(self.figure, f"wild_type/{name}/data")
+            self.assertTrue(np.array_equal(data.get_xdata(), z) and np.array_equal(data.get_ydata(), force), name)
+            offset, tilt = row["baseline_offset_uN"], row["baseline_tilt_N_per_m"]
+            baseline = one(self.figure, f"wild_type/{name}/baseline")
+            self.assertTrue(close(baseline.get_ydata(), offset + tilt * np.asarray(baseline.get_xdata()), 1e-12))
+            contact = one(self.figure, f"wild_type/{name}/contact")
+            self.assertTrue(close(contact.get_xdata(), [row["contact_z_um"]]))
+            self.assertTrue(close(contact.get_ydata(), [offset + tilt * row["contact_z_um"]], 1e-12))
+            # The window line, refitted here: the baselined approach from contact to its maximum,
+            # the samples whose force lies in [window_low, window_high], fitted by numpy's polyfit.
+            above = force - (offset + tilt * z)
+            start = int(np.argmax(z >= row["contact_z_um"]))
+            peak = start + int(np.argmax(above[start:]))
+            span = slice(start, peak + 1)
+            inside = (above[span] >= row["window_low_uN"]) & (above[span] <= row["window_high_uN"])
+            slope, intercept = np.polyfit(z[span][inside], above[span][inside], 1)
+            self.assertTrue(close([slope], [row["k_m_N_per_m"]], 1e-9), name)
+            fit = one(self.figure, f"wild_type/{name}/fit")
+            x = np.asarray(fit.get_xdata())
+            self.assertTrue(close(np.asarray(fit.get_ydata()) - (offset + tilt * x), intercept + slope * x, 1e-9), name)
+            # It spans the window: its ends lie at the window's forces above the baseline.
+            self.assertTrue(close(intercept + slope * x, [row["window_low_uN"], row["window_high_uN"]], 1e-9), name)
+            self.assertGreaterEqual(x.min(), z[span][inside].min() - 0.05)
+            self.assertLessEqual(x.max(), z[span][inside].max() + 0.05)
+            window = one(self.figure, f"wild_type/{name}/window")
+            self.assertTrue(close(sorted({float(v) for v in np.asarray(window.get_xy())[:, 0]}), x, 1e-12))
+
+    def test_each_tube_k_with_its_95_percent_interval(self):
+        tube_axes = self.figure.axes[1]
+        self.assertEqual(tube_axes.get_ylabel(), "k (N/m)")
+        ok = self.tubes[self.tubes["ok"] > 0]
+        self.assertEqual(len(ok), 12)
+        points = one(self.figure, "wild_type/tubes")
+        self.assertTrue(close(points.get_ydata(), ok["k_N_per_m"]))
+        segments = one(self.figure, "wild_type/tubes/interval").get_segments()
+        self.assertTrue(close([s[0][1] for s in segments], ok["k_N_per_m"] - 1.959963984540054 * ok["u_N_per_m"], 1e-12))
+        self.assertTrue(close([s[1][1] for s in segments], ok["k_N_per_m"] + 1.959963984540054 * ok["u_N_per_m"], 1e-12))
+        self.assertEqual([t.get_text() for t in tube_axes.get_xticklabels()], [as_text(t) for t in ok["tube"]])
+        # Each tube's k is the mean of its ok curves' k (Eq. (C10)).
+        for tube in ok:
+            mine = [as_text(t) == as_text(tube["tube"]) and as_text(s) == "ok"
+                    for t, s in zip(self.curves["tube"], self.curves["status"])]
+            self.assertTrue(close([np.mean(self.curves["k_N_per_m"][mine])], [tube["k_N_per_m"]], 1e-12))
 
 
 class Letters(unittest.TestCase):
@@ -966,6 +1068,7 @@ if __name__ == "__main__":
     import plotting.boxes
     import plotting.captions
     import plotting.correlogram
+    import plotting.force_curves
     import plotting.growth_rate
     import plotting.pca
     import plotting.relaxation

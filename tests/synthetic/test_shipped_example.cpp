@@ -58,7 +58,7 @@ bool agree(const std::string& drawn, const std::string& shipped) {
 
 }  // namespace
 
-TEST_CASE("distributions/example_raw is what `growthuq synth ... --seed 2022` writes") {
+TEST_CASE("distributions/example_raw is what `growthuq synth ... --seed 2022 --force-curves 2 --curve-samples 200` writes") {
   const fs::path source = GROWTHUQ_SOURCE_DIR;
   const fs::path directory = fs::temp_directory_path() / "growthuq_test_shipped_example";
   fs::remove_all(directory);
@@ -67,7 +67,7 @@ TEST_CASE("distributions/example_raw is what `growthuq synth ... --seed 2022` wr
   for (const char* line : {"wild_type", "xxt1_xxt2", "xeg113", "xxt1_xxt2_xeg113", "pme48"}) {
     arguments += " '" + (source / "distributions" / (std::string(line) + ".ini")).string() + "'";
   }
-  const CliOutcome outcome = run_cli(arguments + " --seed 2022 --out drawn", directory);
+  const CliOutcome outcome = run_cli(arguments + " --seed 2022 --force-curves 2 --curve-samples 200 --out drawn", directory);
   REQUIRE_MESSAGE(outcome.exit_code == 0, outcome.err);
   int files = 0;
   const std::string prefix = source.string() + "/";
@@ -79,6 +79,6 @@ TEST_CASE("distributions/example_raw is what `growthuq synth ... --seed 2022` wr
     CHECK(agree(comparable(slurp(directory / "drawn" / relative), prefix), comparable(slurp(entry.path()), prefix)));
     ++files;
   }
-  CHECK(files == 5 * 8);
+  CHECK(files == 5 * 11);  // 8 tables and curve files, and force_curves.csv, its sheet and its truth
   fs::remove_all(directory);
 }

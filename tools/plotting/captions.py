@@ -14,6 +14,9 @@ FIXED = {
     "relaxation": "Force-relaxation curves of the raw-data lines (points) and their generalized Maxwell fits "
                   "(lines), t = 0 at the force maximum; under each panel the residuals F - F_fit of the fitted "
                   "curves.",
+    "force_curves": "Force-indentation curves of the raw-data lines whose k comes from force curves: recorded force "
+                    "(points), baseline offset and tilt (dashed), contact point (ring), fit window (bar along the bottom) and the "
+                    "window line; right, each tube's k with its 95 % interval (k ± 1.96 u) and its curves' k (dots).",
     "tradeoff": "Precision of the medians against the samples per line (growthuq tradeoff), log-log: lines, the "
                 "half-width of each line's 95 % confidence interval of the median in % of the median; open points, "
                 "the measured |median error| against the largest run; dashed, the target precision. Last panel: "

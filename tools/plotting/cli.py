@@ -12,7 +12,7 @@ from .errors import FigureSkipped, PlotInputError
 from .results import read_results
 
 FORMATS = ("png", "pdf")
-FIGURES = ("boxes", "growth_rate", "correlogram", "sensitivity", "pca", "relaxation", "tradeoff")
+FIGURES = ("boxes", "growth_rate", "correlogram", "sensitivity", "pca", "relaxation", "force_curves", "tradeoff")
 # Not drawn unless --figures names them: the PCA's scree plot says nothing of which input drives
 # an output, which the sensitivity figure shows; it stays available by name.
 ON_REQUEST = ("pca",)
@@ -28,6 +28,7 @@ def _builders(results, results_dir, notes, target_pct):
     wrong path or file is reported at once."""
     from .boxes import box_figure
     from .correlogram import correlogram_columns, correlogram_figure
+    from .force_curves import force_curves_figure
     from .growth_rate import growth_rate_figure
     from .pca import pca_figure
     from .relaxation import relaxation_figure
@@ -60,6 +61,7 @@ def _builders(results, results_dir, notes, target_pct):
         "sensitivity": lambda: [("sensitivity", sensitivity_figure(results))],
         "pca": lambda: [("pca", pca_figure(results))],
         "relaxation": lambda: [("relaxation", relaxation_figure(results))],
+        "force_curves": lambda: [("force_curves", force_curves_figure(results))],
         "tradeoff": trade,
     }
 
@@ -114,8 +116,8 @@ def parse_arguments(argv):
     parser = argparse.ArgumentParser(
         prog="tools/plot",
         description="Figures of a growthuq campaign: box plots per line, predicted vs measured "
-                    "growth rate, correlograms, first-order sensitivity, PCA, relaxation fits, the "
-                    "speed/accuracy trade.")
+                    "growth rate, correlograms, first-order sensitivity, PCA, relaxation fits, force "
+                    "curves and stiffness per tube, the speed/accuracy trade.")
     parser.add_argument("results_dir", metavar="RESULTS_DIR", type=Path,
                         help="output directory of `growthuq run` (holds results.h5)")
     parser.add_argument("--out", type=Path, help="where the plots go (default RESULTS_DIR/plots)")

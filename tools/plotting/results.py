@@ -1,7 +1,7 @@
 """A campaign's results.h5 (layout: campaigns/README.md, section "results.h5") read into plain
 objects: per line the columns with their quantity, unit and role, the sample statuses, the stored
 analysis, the data-uncertainty intervals of its medians and the tubes behind its fitted laws and, when
-present, the relaxation curves. Which samples count follows growthuq's summaries: those holding a value
+present, the relaxation curves and the force curves. Which samples count follows growthuq's summaries: those holding a value
 of the quantity (every sample for an input; for an output, those whose model computed it, whatever flag
 a later model gave the sample, and v = 0 of no_growth); the correlogram, like the engine's analysis,
 uses status ok only."""
@@ -15,6 +15,7 @@ import numpy as np
 from .errors import PlotInputError
 from .h5text import as_text, text_attribute, text_list
 from .letters import read_letters
+from .force_curves_data import read_force_curves
 from .relaxation_data import read_relaxation
 
 COLUMN_ATTRIBUTES = ("quantity", "unit", "role")
@@ -49,6 +50,7 @@ class Line:
                                            # fitted to (raw-data lines); None for line files
     tube_values: dict = field(default_factory=dict)  # variable: the values its law was fitted to, one
                                            # per tube (/lines/<line>/fit_data; raw-data lines only)
+    force_curves: tuple = None             # ([ForceCurve], [Tube]) of force_curves_data.py, or None
 
     def column(self, quantity):
         return next((column for column in self.columns if column.quantity == quantity), None)
@@ -166,8 +168,10 @@ def _read_line(h5, name, path):
                                  f"{codes.size}, one per sample as in status")
     relaxation = (read_relaxation(group["relaxation"], f"{where}/relaxation")
                   if "relaxation" in group else None)
+    force_curves = (read_force_curves(group["force_curves"], f"{where}/force_curves")
+                    if "force_curves" in group else None)
     return Line(name, columns, names[codes], analysis, relaxation, _data_intervals(group),
-                _tubes(group), _tube_values(group))
+                _tubes(group), _tube_values(group), force_curves)
 
 
 def _data_intervals(group):

@@ -17,7 +17,9 @@
 // 97.5 % quantiles of the replicate medians form the percentile interval (Efron & Tibshirani
 // 1993, ch. 13): it holds the data's and the replicates' Monte Carlo uncertainty together. Curve
 // fits are not redone: the spread of the fitted tau and einf already holds their measurement
-// error, and a replicate redraws from that spread. A replicate that fails (e.g. no sample of the
+// error, and a replicate redraws from that spread. k of force curves is, by default, also drawn
+// within each tube's measurement uncertainty u (parametric_resample.hpp add_measurement_error;
+// [force_curves] measurement_error, src/forcecurves/README.md Eq. (C11)). A replicate that fails (e.g. no sample of the
 // reference line grows, so kappa cannot be calibrated) is counted and left out.
 #pragma once
 
@@ -49,6 +51,10 @@ struct DataUncertainty {
   // Whether the line's laws were redrawn in each replicate (a raw-data line); false: its
   // replicate medians vary by Monte Carlo error only, and line comparisons leave it out.
   bool resampled = false;
+  // Whether the line's values were drawn within their measurement uncertainty too (k of force
+  // curves, [force_curves] measurement_error = bootstrap): the interval then includes
+  // measurement error.
+  bool measurement_error = false;
   // The campaign's own median and its Monte Carlo 95 % CI (summary.csv), next to the interval
   // for reports; filled by the outputs (raw_data_outputs.hpp), NaN until then.
   double median = std::numeric_limits<double>::quiet_NaN();

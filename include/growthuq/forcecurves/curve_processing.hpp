@@ -68,6 +68,8 @@ struct CurveResult {
   double window_low_N = 0.0, window_high_N = 0.0;  // the window's forces above the baseline
   std::size_t window_samples = 0;
   double measured_stiffness = 0.0;     // k_m, slope of force against stage position (N/m)
+  double fit_intercept_N = 0.0;        // the window line's force above the baseline at z = 0:
+                                       // F - baseline = fit_intercept_N + k_m z (for figures)
   double r_squared = 0.0;
   // The tube's stiffness (C7) and its uncertainty (C8, C9), all N/m.
   double stiffness = 0.0;

@@ -40,7 +40,9 @@ std::vector<ForceCurve> read_force_curves(const std::string& curves_path, const 
 
 // The curves as a long table `curve,t_s,z_um,F_uN,segment` (t_s when every curve has times) and
 // their sheet `curve,tube,repetition,rho_um,k_sys_N_per_m`, as read_force_curves reads them back.
-std::string force_curves_csv(const std::vector<ForceCurve>& curves);
+// `decimals` >= 0 rounds t_s, z_um and F_uN to that many decimals (trailing zeros dropped), as an
+// instrument's reading has a resolution; -1 writes every double exactly.
+std::string force_curves_csv(const std::vector<ForceCurve>& curves, int decimals = -1);
 std::string curve_sheet_csv(const std::vector<ForceCurve>& curves);
 
 }  // namespace growthuq

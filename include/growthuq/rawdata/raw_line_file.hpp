@@ -18,7 +18,8 @@
 //                               (forcecurves/): curves = CSV (a long table with a curve column),
 //                               sheet = CSV (curve,tube,repetition,rho_um,k_sys_N_per_m),
 //                               window = relative|absolute (relative), window_uN = a,b (4,0.5 or
-//                               0.4,4), contact = deviation|piecewise (deviation), families = ...
+//                               0.4,4), contact = deviation|piecewise (deviation),
+//                               measurement_error = bootstrap|none (bootstrap), families = ...
 #pragma once
 
 #include <string>
@@ -58,6 +59,9 @@ struct RawForceCurves {
   std::string sheet;
   CurveProcessingOptions options;   // window and contact from the section, the rest the defaults
   std::vector<FitFamily> families;
+  // measurement_error = bootstrap (true, the default) | none: whether the data bootstrap draws
+  // each tube's k within its uncertainty u (src/forcecurves/README.md, Eq. (C11)).
+  bool measurement_error = true;
   long line = 0;
 };
 

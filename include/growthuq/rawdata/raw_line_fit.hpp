@@ -48,6 +48,10 @@ struct VariableFit {
   const Unit* unit = nullptr;         // of `values` and of the fitted law
   std::string source;                 // where the values come from, for reports and line files
   std::vector<double> values;         // the data fitted, in `unit`
+  // Each value's measurement uncertainty (same unit), drawn within in the data bootstrap
+  // (campaign/data_uncertainty.hpp); empty: the values are taken as exact. Only k of force
+  // curves has them ([force_curves] measurement_error = bootstrap).
+  std::vector<double> uncertainties;
   std::vector<FitFamily> families;    // compared, in this order
   std::vector<FamilyFit> candidates;  // one per family
   std::size_t chosen = 0;             // least AIC among the successful candidates
@@ -73,7 +77,8 @@ struct RelaxationFits {
 
 // The force curves of [force_curves], processed (src/forcecurves/README.md).
 struct ForceCurveFits {
-  std::vector<CurveResult> curves;  // one per curve, in the file's order
+  std::vector<ForceCurve> data;     // as read, SI
+  std::vector<CurveResult> curves;  // one per curve, same order
   std::vector<TubeStiffness> tubes;
 };
 
