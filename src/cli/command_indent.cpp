@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "campaign/progress.hpp"
+#include "growthuq/campaign/progress.hpp"
 #include "commands.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
