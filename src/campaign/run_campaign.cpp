@@ -1,7 +1,6 @@
 #include "growthuq/campaign/run_campaign.hpp"
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <utility>
@@ -114,6 +113,13 @@ RunSummary run_prepared(const PreparedCampaign& prepared, Pool& pool, const Outp
   return summary;
 }
 
+// Three significant digits below 100 s ("0.0123", "4.56"), whole seconds from there.
+std::string seconds_text(double seconds) {
+  char text[32];
+  std::snprintf(text, sizeof text, seconds < 100 ? "%.3g" : "%.0f", seconds);
+  return text;
+}
+
 }  // namespace
 
 RunSummary run_campaign(Campaign campaign, Pool& pool, const RunOptions& options) {
@@ -169,7 +175,7 @@ std::string RunSummary::brief_report() const {
   if (!completed) return stop_message;
   std::string text = "campaign '" + campaign + "': " + std::to_string(lines) + (lines == 1 ? " line" : " lines") + " x " +
                      std::to_string(samples_per_line) + " samples " + (resumed ? "resumed and finished" : "run") + " in " +
-                     format_double(std::round(seconds * 10.0) / 10.0) + " s";
+                     seconds_text(seconds) + " s";
   if (calibrated) text += ", kappa " + format_double(kappa);
   return text + ", results in " + output_dir;
 }

@@ -57,7 +57,7 @@ struct RunSummary {
   RunTimings timings;       // this process's
   double seconds = 0.0;     // wall time of the whole call
 
-  // "campaign 'quick': 5 lines x 300 samples in 0.4 s, kappa 1.23, results in results/quick",
+  // "campaign 'quick': 5 lines x 300 samples run in 0.412 s, kappa 1.23, results in results/quick",
   // or the stop message.
   std::string brief_report() const;
   // The brief report, then per line and quantity the median, quartiles and n, then the time
