@@ -158,7 +158,7 @@ int run_indent(const Arguments& arguments) {
 
   std::cout << "# finite-element shell: " << describe(options) << ", rho = " << flags.instrument.rho_um
             << " um, nu = " << flags.instrument.nu << "\n";
-  if (curve.status == ShellFeStatus::ok) {
+  if (curve.status == SampleStatus::ok) {
     print("k_N_per_m", curve.stiffness);
     print("k_measured_N_per_m", curve.measured_stiffness);
     print("contact_radius_um", curve.window_contact_radius * 1e6);

@@ -41,16 +41,16 @@ void check_shell_poisson(double poisson, std::string_view location) {
   }
 }
 
-ShellFeStatus to_shell_fe_status(FeStatus status) {
+SampleStatus to_sample_status(FeStatus status) {
   switch (status) {
-    case FeStatus::ok: return ShellFeStatus::ok;
-    case FeStatus::not_converged: return ShellFeStatus::not_converged;
-    case FeStatus::burst: return ShellFeStatus::burst;
-    case FeStatus::contact_lost: return ShellFeStatus::contact_lost;
-    case FeStatus::probe_beyond_mesh: return ShellFeStatus::probe_beyond_mesh;
-    case FeStatus::invalid_input: return ShellFeStatus::invalid_input;
+    case FeStatus::ok: return SampleStatus::ok;
+    case FeStatus::not_converged: return SampleStatus::not_converged;
+    case FeStatus::burst: return SampleStatus::burst;
+    case FeStatus::contact_lost: return SampleStatus::contact_lost;
+    case FeStatus::probe_beyond_mesh: return SampleStatus::probe_beyond_mesh;
+    case FeStatus::invalid_input: return SampleStatus::invalid_input;
   }
-  return ShellFeStatus::not_converged;
+  return SampleStatus::not_converged;
 }
 
 MaterialLaw to_material_law(ShellFeLaw law) {

@@ -19,7 +19,7 @@ ForwardProblem make_problem(const ShellFeOptions& options, double plasmolysed_di
 // naming key nu otherwise.
 void check_shell_poisson(double poisson, std::string_view location);
 
-ShellFeStatus to_shell_fe_status(FeStatus status);
+SampleStatus to_sample_status(FeStatus status);
 MaterialLaw to_material_law(ShellFeLaw law);
 FarFieldLaw to_far_field_law(ShellFeLaw law);
 
