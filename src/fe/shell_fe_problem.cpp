@@ -11,11 +11,7 @@ namespace growthuq::fe {
 ForwardProblem make_problem(const ShellFeOptions& options, double plasmolysed_diameter, double probe_radius,
                             double poisson) {
   ForwardProblem problem;
-  switch (options.geometry) {
-    case ShellFeGeometry::tube: problem.geometry = Geometry::tube; break;
-    case ShellFeGeometry::sphere: problem.geometry = Geometry::sphere; break;
-    case ShellFeGeometry::file: problem.geometry = Geometry::file; break;
-  }
+  problem.geometry = options.geometry;
   problem.mesh_file = options.mesh_file;
   problem.poisson = poisson;
   problem.law = to_material_law(options.law);
@@ -26,12 +22,7 @@ ForwardProblem make_problem(const ShellFeOptions& options, double plasmolysed_di
   problem.bending = options.bending;
   problem.half_model = options.half_model;
   problem.contact = options.contact;
-  switch (options.mesh) {
-    case ShellFeMesh::coarse: problem.mesh = MeshLevel::coarse; break;
-    case ShellFeMesh::standard: problem.mesh = MeshLevel::standard; break;
-    case ShellFeMesh::fine: problem.mesh = MeshLevel::fine; break;
-    case ShellFeMesh::finer: problem.mesh = MeshLevel::finer; break;
-  }
+  problem.mesh = options.mesh;
   return problem;
 }
 

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "growthuq/evaluation/sample_status.hpp"
+#include "growthuq/fe/shell_fe_vocabulary.hpp"
 #include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/mechanics/thin_shell.hpp"
 
@@ -23,8 +24,7 @@ enum class ShellFeLaw {
   hencky,                  // "log": Kirchhoff stress = Hooke's law of the logarithmic strain
   saint_venant_kirchhoff,  // "stvk": second Piola-Kirchhoff stress = Hooke's law of Green's strain
 };
-enum class ShellFeGeometry { tube, sphere, file };
-enum class ShellFeMesh { coarse, standard, fine, finer };  // "coarse" | "default" | "fine" | "finer"
+// ShellFeGeometry, ShellFeMesh: shell_fe_vocabulary.hpp.
 // How the probe and the substrate are kept out of the wall (src/fe/README.md, section 4):
 // exact frictionless contact by an active set (default: no penetration, no parameter), or the
 // smooth penalty it replaced, kept for comparison.
