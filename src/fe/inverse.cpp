@@ -34,7 +34,7 @@ struct Inflated {
 double unstressed_at(ShellFeLaw law, double p_over_t, double turgid, double nu) {
   double thickness = turgid;
   for (int pass = 0; pass < 100; ++pass) {
-    const fe::FarFieldInflation state = fe::far_field_inflation(fe::to_far_field_law(law), p_over_t * thickness, thickness, nu);
+    const fe::FarFieldInflation state = fe::far_field_inflation(fe::far_field_law(law), p_over_t * thickness, thickness, nu);
     if (state.burst || !(state.thickness_stretch > 0)) return 0.0;
     const double next = turgid / state.thickness_stretch;
     if (std::abs(next - thickness) <= 1e-13 * next) return next;
@@ -53,7 +53,7 @@ Inflated inflate(const ShellFeMeasurement& m, const Instrument& instrument, cons
   const double nu = instrument.poisson_ratio;
   // FE1's closed-form far-field inverse: the membrane state depends on p/E and h0/d0 only
   // through G = (p/E)/(h0/d0), and G follows explicitly from the hoop stretch.
-  const fe::FarFieldInverse far = fe::far_field_inverse(fe::to_far_field_law(options.law), lambda, turgid, nu);
+  const fe::FarFieldInverse far = fe::far_field_inverse(fe::far_field_law(options.law), lambda, turgid, nu);
   if (far.status != fe::FarFieldInverseStatus::ok) {
     inflated.status = SampleStatus::no_inflation_state;
     inflated.message = std::string("far field at d/d0 = ") + format_double(lambda) + ": " +
@@ -94,7 +94,7 @@ Inflated inflate(const ShellFeMeasurement& m, const Instrument& instrument, cons
   inverse.far_field_diameter_error = r;
   // The far field's slope d(ln lambda)/d(ln P), by a central difference of the closed solution.
   const auto far_lambda = [&](double at) {
-    return fe::far_field_inflation(fe::to_far_field_law(options.law), std::exp(at) * far.h0_over_d0, far.h0_over_d0, nu).hoop_stretch;
+    return fe::far_field_inflation(fe::far_field_law(options.law), std::exp(at) * far.h0_over_d0, far.h0_over_d0, nu).hoop_stretch;
   };
   double slope = (std::log(far_lambda(u + 1e-4)) - std::log(far_lambda(u - 1e-4))) / 2e-4;
   if (!(std::isfinite(slope) && slope > 0)) slope = 1.0;

@@ -14,7 +14,7 @@ ForwardProblem make_problem(const ShellFeOptions& options, double plasmolysed_di
   problem.geometry = options.geometry;
   problem.mesh_file = options.mesh_file;
   problem.poisson = poisson;
-  problem.law = to_material_law(options.law);
+  problem.law = options.law;
   problem.probe_radius = probe_radius / plasmolysed_diameter;
   problem.tube_length = options.tube_length / plasmolysed_diameter;
   problem.probe_distance = options.probe_distance / plasmolysed_diameter;
@@ -44,18 +44,10 @@ SampleStatus to_sample_status(FeStatus status) {
   return SampleStatus::not_converged;
 }
 
-MaterialLaw to_material_law(ShellFeLaw law) {
-  return law == ShellFeLaw::hencky ? MaterialLaw::hencky : MaterialLaw::saint_venant_kirchhoff;
-}
-
-FarFieldLaw to_far_field_law(ShellFeLaw law) {
-  return law == ShellFeLaw::hencky ? FarFieldLaw::hencky : FarFieldLaw::saint_venant_kirchhoff;
-}
-
 double far_field_unstressed_thickness(ShellFeLaw law, double pressure_over_young, double turgid_thickness,
                                       double poisson) {
   const FarFieldTurgidInflation inflated =
-      far_field_inflation_to_turgid_thickness(to_far_field_law(law), pressure_over_young, turgid_thickness, poisson);
+      far_field_inflation_to_turgid_thickness(far_field_law(law), pressure_over_young, turgid_thickness, poisson);
   return inflated.inflation.burst ? 0.0 : inflated.h0_over_d0;
 }
 

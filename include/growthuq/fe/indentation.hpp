@@ -19,12 +19,7 @@
 
 namespace growthuq {
 
-// The wall's constitutive law, both linear in E (src/fe/README.md, equations 3-4).
-enum class ShellFeLaw {
-  hencky,                  // "log": Kirchhoff stress = Hooke's law of the logarithmic strain
-  saint_venant_kirchhoff,  // "stvk": second Piola-Kirchhoff stress = Hooke's law of Green's strain
-};
-// ShellFeGeometry, ShellFeMesh: shell_fe_vocabulary.hpp.
+// ShellFeLaw, ShellFeGeometry, ShellFeMesh: shell_fe_vocabulary.hpp.
 // How the probe and the substrate are kept out of the wall (src/fe/README.md, section 4):
 // exact frictionless contact by an active set (default: no penetration, no parameter), or the
 // smooth penalty it replaced, kept for comparison.

@@ -5,6 +5,11 @@
 
 namespace growthuq {
 
+// The wall's constitutive law, both linear in E (src/fe/README.md, equations 3-4).
+enum class ShellFeLaw {
+  hencky,                  // "log": Kirchhoff stress = Hooke's law of the logarithmic strain
+  saint_venant_kirchhoff,  // "stvk": second Piola-Kirchhoff stress = Hooke's law of Green's strain
+};
 enum class ShellFeGeometry { tube, sphere, file };
 enum class ShellFeMesh { coarse, standard, fine, finer };  // "coarse" | "default" | "fine" | "finer"
 
