@@ -10,7 +10,7 @@
 #include "growthuq/core/units.hpp"
 #include "campaign/sensitivity_settings.hpp"
 #include "io/ini.hpp"
-#include "io/read_text_file.hpp"
+#include "growthuq/io/read_text_file.hpp"
 
 namespace growthuq {
 namespace {
@@ -351,26 +351,43 @@ Campaign parse_campaign(const std::string& text, const std::string& path) {
   }
   if (!has_campaign) throw InputError(path, "no [campaign] section (name, seed, samples, outputs, output_dir)");
   if (!has_instrument) throw InputError(path, "no [instrument] section: probe_radius_um is required (it dominates turgor)");
-  if (campaign.lines.empty()) throw InputError(path, "no [line NAME] section: a campaign needs at least one plant line");
-  for (std::size_t i = 0; i < campaign.lines.size(); ++i) {
-    for (std::size_t j = 0; j < i; ++j) {
-      if (campaign.lines[i].name == campaign.lines[j].name) {
-        throw InputError(document.location(campaign.lines[i].line), "line '" + campaign.lines[i].name + "' repeats");
-      }
-    }
-  }
+  campaign.validate();
   // [data_uncertainty] without a line it can resample (raw data, or a law stating tubes) is
   // refused by PreparedCampaign, which reads the line files; the default replicates apply only
   // when a line is given by raw data.
   apply_default_replicates(campaign);
-  const bool wants_growth = std::find(campaign.outputs.begin(), campaign.outputs.end(), "v") != campaign.outputs.end();
-  if (wants_growth && campaign.reference_line.empty()) {
-    throw InputError(path, "output v needs [growth] reference_line: the line whose experimental growth rate calibrates kappa");
-  }
-  if (!campaign.reference_line.empty() && campaign.find_line(campaign.reference_line) == nullptr) {
-    throw InputError(path, "[growth] reference_line = '" + campaign.reference_line + "': expected one of the campaign's lines");
-  }
   return campaign;
+}
+
+void Campaign::validate() const {
+  const std::string where = path.empty() ? std::string("campaign") : path;
+  if (samples < 1 || samples > 4294967295ULL) {
+    throw_bad_value(where, "samples", std::to_string(samples), "a whole number from 1 to 4294967295");
+  }
+  if (outputs.empty()) throw_bad_value(where, "outputs", "", "a list such as 'p, E, eta, v'");
+  for (const std::string& output : outputs) {
+    if (find_quantity(output) == nullptr) {
+      std::string known;
+      for (const Quantity& quantity : known_quantities()) known += (known.empty() ? "" : ", ") + std::string(quantity.name);
+      throw_bad_value(where, "outputs", output, "quantities among " + known);
+    }
+  }
+  if (output_dir.empty()) throw_bad_value(where, "output_dir", output_dir, "a directory for the results");
+  if (lines.empty()) throw InputError(where, "no [line NAME] section: a campaign needs at least one plant line");
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (lines[i].name == lines[j].name) {
+        throw InputError(file_location(where, lines[i].line), "line '" + lines[i].name + "' repeats");
+      }
+    }
+  }
+  const bool wants_growth = std::find(outputs.begin(), outputs.end(), "v") != outputs.end();
+  if (wants_growth && reference_line.empty()) {
+    throw InputError(where, "output v needs [growth] reference_line: the line whose experimental growth rate calibrates kappa");
+  }
+  if (!reference_line.empty() && find_line(reference_line) == nullptr) {
+    throw InputError(where, "[growth] reference_line = '" + reference_line + "': expected one of the campaign's lines");
+  }
 }
 
 bool has_raw_data_line(const Campaign& campaign) {

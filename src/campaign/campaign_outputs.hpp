@@ -11,8 +11,9 @@
 
 #include "growthuq/campaign/campaign_run.hpp"
 #include "campaign/checkpoint_manifest.hpp"
+#include "growthuq/campaign/run_campaign.hpp"
 #include "growthuq/evaluation/line_result.hpp"
-#include "campaign/progress.hpp"
+#include "growthuq/campaign/progress.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "growthuq/pool/pool.hpp"
 
@@ -59,13 +60,7 @@ inline constexpr const char* results_h5_name = "results.h5";
 // The folder in the output directory where a run writes its results until all are complete.
 inline constexpr const char* staging_name = "staging";
 
-// What a run checks of campaign.output_dir before it creates it or writes there, without
-// touching it (`growthuq check`, and `growthuq run` before it prepares the campaign): InputError
-// naming it when a live run holds it (the lock's "is in use" message), when it exists and
-// overwrite is refuse (suggesting --resume when it holds an interrupted run), when it exists and
-// is no directory, when a result file there would replace something that is not a regular file,
-// or when it is "-" (standard output, which other commands take for a result file).
-void check_output_directory(const Campaign& campaign, Overwrite overwrite);
+// check_output_directory: growthuq/campaign/run_campaign.hpp.
 
 // Every process calls it. Rank 0 creates campaign.output_dir if needed, locks it for the whole
 // run (output_lock.hpp: a second live run is refused naming this one) and checks it before any

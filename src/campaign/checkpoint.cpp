@@ -8,7 +8,7 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "campaign/chunk_values.hpp"
-#include "io/read_text_file.hpp"
+#include "growthuq/io/read_text_file.hpp"
 
 namespace growthuq {
 namespace {

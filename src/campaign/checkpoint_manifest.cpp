@@ -11,7 +11,7 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/rawdata/raw_line_file.hpp"
-#include "io/read_text_file.hpp"
+#include "growthuq/io/read_text_file.hpp"
 
 namespace growthuq {
 namespace {

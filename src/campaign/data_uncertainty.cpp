@@ -1,5 +1,5 @@
 #include "growthuq/campaign/data_uncertainty.hpp"
-#include "campaign/progress.hpp"
+#include "growthuq/campaign/progress.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -12,6 +12,7 @@
 
 #include "campaign/sensitivity_settings.hpp"
 #include "growthuq/campaign/campaign_run.hpp"
+#include "growthuq/campaign/run_time_estimate.hpp"
 #include "growthuq/evaluation/line_result.hpp"
 #include "growthuq/sensitivity/shapley.hpp"
 
@@ -32,10 +33,6 @@ LineShapley line_shapley(const PreparedCampaign& campaign, const LineResult& res
 // The model runs the Shapley effects take per line (Eq. (S3) cost, src/sensitivity/README.md):
 // N_v + (2^d - 2) N_o N_i with exact permutations (d <= 6 inputs), N_v + m (d - 1) N_o N_i beyond.
 std::size_t shapley_model_runs(std::size_t inputs, const ShapleySettings& cost);
-
-// For `growthuq check`: one line per campaign, the runs per line and their ratio to the run's own
-// samples, or nothing when the campaign does not ask for Shapley effects.
-std::string describe_shapley_cost(const PreparedCampaign& campaign);
 
 // The shares as a table (inputs as rows, outputs as columns, "share [low, high]"), the model runs
 // and the copula assumption; or the note. Ends with a newline.

@@ -1,4 +1,4 @@
-#include "campaign/progress.hpp"
+#include "growthuq/campaign/progress.hpp"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-#include "campaign/run_footprint.hpp"
+#include "growthuq/campaign/run_footprint.hpp"
 
 #include <sys/statvfs.h>
 

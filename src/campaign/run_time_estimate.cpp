@@ -1,4 +1,4 @@
-#include "campaign/run_time_estimate.hpp"
+#include "growthuq/campaign/run_time_estimate.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "campaign/progress.hpp"
+#include "growthuq/campaign/progress.hpp"
 #include "growthuq/pool/pool.hpp"
 #include "growthuq/rawdata/raw_line_fit.hpp"
 #include "growthuq/relaxation/analysis.hpp"

@@ -3,7 +3,7 @@
 #include <chrono>
 
 #include "growthuq/campaign/campaign_run.hpp"
-#include "campaign/progress.hpp"
+#include "growthuq/campaign/progress.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/printable.hpp"
 

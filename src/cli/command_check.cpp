@@ -9,10 +9,9 @@
 #include <optional>
 #include <string>
 
-#include "campaign/campaign_outputs.hpp"
-#include "campaign/run_footprint.hpp"
-#include "campaign/line_shapley.hpp"
-#include "campaign/run_time_estimate.hpp"
+#include "growthuq/campaign/run_campaign.hpp"
+#include "growthuq/campaign/run_footprint.hpp"
+#include "growthuq/campaign/run_time_estimate.hpp"
 #include "campaign_flags.hpp"
 #include "commands.hpp"
 #include "growthuq/campaign/campaign_run.hpp"

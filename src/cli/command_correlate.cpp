@@ -14,7 +14,7 @@
 #include "growthuq/core/units.hpp"
 #include "growthuq/correlation/matrix_file.hpp"
 #include "growthuq/io/output_file.hpp"
-#include "io/read_text_file.hpp"
+#include "growthuq/io/read_text_file.hpp"
 #include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/mechanics/mechanical_correlation.hpp"
 #include "options.hpp"

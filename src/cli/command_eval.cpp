@@ -18,7 +18,7 @@
 #include <utility>
 #include <vector>
 
-#include "campaign/progress.hpp"
+#include "growthuq/campaign/progress.hpp"
 #include "commands.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"

@@ -3,8 +3,6 @@
 // errors in p and E of the corrected and the plain closed form against the finite-element
 // values, on the fitted rows and on the held-out ones (every fifth index), and the five-fold
 // cross-validation's.
-#include <algorithm>
-#include <cmath>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -12,9 +10,7 @@
 #include "commands.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
-#include "correction/correction_training.hpp"
-#include "growthuq/correction/corrected_closed_form.hpp"
-#include "growthuq/io/csv.hpp"
+#include "growthuq/correction/correction_refit.hpp"
 #include "growthuq/io/output_file.hpp"
 #include "options.hpp"
 
@@ -23,91 +19,6 @@ namespace {
 
 constexpr std::string_view command = "growthuq fit-correction";
 constexpr std::string_view usage = "[--training FILE] [--out FILE.inc] [--errors FILE.csv] [--force]";
-
-struct Errors {
-  int rows = 0, outside = 0;
-  double max_p = 0, max_E = 0, max_closed_p = 0, max_closed_E = 0;
-};
-
-// The corrected inverse of a training row's measured tube (its own probe, the correction's nu).
-CorrectedInverse corrected_for(const TrainingPoint& point, const Correction& correction) {
-  Instrument instrument;
-  instrument.probe_radius_m = point.rho;
-  instrument.poisson_ratio = correction.poisson_ratio;
-  return corrected_inverse(point.k, diameters_in_si(point.d, point.d0), point.h, instrument, correction);
-}
-
-// The largest relative errors of the corrected and the closed form against the training rows'
-// finite-element p and E, over the rows `held` says.
-Errors errors_of(const std::vector<TrainingPoint>& points, const Correction& correction, bool held) {
-  Errors errors;
-  for (const TrainingPoint& point : points) {
-    if (!in_training_envelope(point) || held_out(point) != held) continue;
-    const CorrectedInverse result = corrected_for(point, correction);
-    if (result.status == SampleStatus::outside_correction) {
-      ++errors.outside;
-      continue;
-    }
-    if (result.status != SampleStatus::ok) continue;
-    ++errors.rows;
-    errors.max_p = std::max(errors.max_p, std::abs(result.p / point.p - 1));
-    errors.max_E = std::max(errors.max_E, std::abs(result.E / point.E - 1));
-    errors.max_closed_p = std::max(errors.max_closed_p, std::abs(result.closed_form_p / point.p - 1));
-    errors.max_closed_E = std::max(errors.max_closed_E, std::abs(result.closed_form_E / point.E - 1));
-  }
-  return errors;
-}
-
-// Per training row with a value: its groups, the finite-element p and E, and both fidelities'
-// values and relative errors (for the plot of tools/fe-correction/plot-errors).
-std::string errors_table(const std::vector<TrainingPoint>& points, const Correction& correction) {
-  CsvWriter writer({"index", "held_out", "lambda", "h_over_d", "rho_over_d", "p_fe_MPa", "E_fe_MPa", "p_closed_form_MPa",
-                    "E_closed_form_MPa", "p_corrected_MPa", "E_corrected_MPa", "status"});
-  for (const TrainingPoint& point : points) {
-    if (!in_training_envelope(point)) continue;
-    const CorrectedInverse r = corrected_for(point, correction);
-    const auto mpa = [](double pa) { return std::isfinite(pa) ? format_double(pa * 1e-6) : std::string(); };
-    writer.add_row({std::to_string(point.index), held_out(point) ? "1" : "0", format_double(point.d / point.d0),
-                    format_double(point.h / point.d), format_double(point.rho / point.d), mpa(point.p), mpa(point.E),
-                    mpa(r.closed_form_p), mpa(r.closed_form_E), mpa(r.p), mpa(r.E), std::string(to_string(r.status))});
-  }
-  return writer.text();
-}
-
-// Five-fold cross-validation: each fold of the rows held out in turn, the correction refitted to
-// the others and its errors on the fold collected. One held-out split can be lucky; this says
-// how the form does on tubes it was not fitted on, over all the data.
-struct CrossValidation {
-  int predictions = 0, outside = 0, within_two_percent = 0;
-  double sum_squares = 0, largest = 0;  // of the larger of the two errors (p, E) per tube
-};
-
-CrossValidation cross_validate(const std::vector<TrainingPoint>& points, double poisson_ratio) {
-  CrossValidation cv;
-  for (int fold = 0; fold < correction_folds; ++fold) {
-    const Correction correction = fit_correction(points, ShellFeOptions{}, poisson_ratio, fold);
-    for (const TrainingPoint& point : points) {
-      if (!in_training_envelope(point) || !held_out(point, fold)) continue;
-      const CorrectedInverse result = corrected_for(point, correction);
-      if (result.status == SampleStatus::outside_correction) ++cv.outside;
-      if (result.status != SampleStatus::ok) continue;
-      const double error = std::max(std::abs(result.p / point.p - 1), std::abs(result.E / point.E - 1));
-      ++cv.predictions;
-      cv.within_two_percent += error <= 0.02 ? 1 : 0;
-      cv.sum_squares += error * error;
-      cv.largest = std::max(cv.largest, error);
-    }
-  }
-  return cv;
-}
-
-std::string percent(double fraction) { return format_double(std::round(fraction * 1e4) / 1e2) + " %"; }
-
-void print(std::string_view name, const Errors& errors) {
-  std::cout << name << ": " << errors.rows << " rows (" << errors.outside << " outside the fitted region); largest error "
-            << "corrected p " << percent(errors.max_p) << ", E " << percent(errors.max_E) << "; closed form p "
-            << percent(errors.max_closed_p) << ", E " << percent(errors.max_closed_E) << "\n";
-}
 
 }  // namespace
 
@@ -139,29 +50,14 @@ int run_fit_correction(const Arguments& arguments) {
   const Overwrite overwrite = force ? Overwrite::allow : Overwrite::refuse;
   check_can_write(out, overwrite);
   if (!errors.empty()) check_can_write(errors, overwrite);
-  const std::vector<TrainingPoint> points = read_training_csv(training);
-  // The fit's refusals (too few usable rows, collinear groups) are the training file's.
-  const Correction correction = [&] {
-    try {
-      return fit_correction(points, ShellFeOptions{}, Instrument{}.poisson_ratio);
-    } catch (const InputError& error) {
-      throw InputError(training, error.problem());
-    }
-  }();
-  print("fitted", errors_of(points, correction, false));
-  print("held out", errors_of(points, correction, true));
-  const CrossValidation cv = cross_validate(points, Instrument{}.poisson_ratio);
-  std::cout << "cross-validation (" << correction_folds << " folds, each held out in turn and the rest refitted): "
-            << cv.predictions << " predictions (" << cv.outside << " outside the fitted region), " << cv.within_two_percent
-            << " within 2 % in p and E; larger of the two errors rms "
-            << percent(cv.predictions ? std::sqrt(cv.sum_squares / cv.predictions) : 0.0) << ", largest " << percent(cv.largest)
-            << "\n";
+  const CorrectionRefit refit = refit_correction(training);
+  std::cout << refit.report;
   // The coefficients and their error table commit together or not at all.
   std::vector<FileContent> results;
-  if (!errors.empty()) results.push_back({errors, errors_table(points, correction)});
-  results.push_back({out, correction_source(correction)});
+  if (!errors.empty()) results.push_back({errors, refit.errors_table});
+  results.push_back({out, refit.source});
   write_files_together(results, overwrite);
-  std::cout << "wrote " << out << " (" << correction.training_points << " fitted rows)\n";
+  std::cout << "wrote " << out << " (" << refit.fitted_rows << " fitted rows)\n";
   if (!errors.empty()) std::cout << "wrote " << errors << "\n";
   return 0;
 }

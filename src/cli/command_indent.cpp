@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "campaign/progress.hpp"
+#include "growthuq/campaign/progress.hpp"
 #include "commands.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -164,7 +164,7 @@ int run_indent(const Arguments& arguments) {
 
   std::cout << "# finite-element shell: " << describe(options) << ", rho = " << flags.instrument.rho_um
             << " um, nu = " << flags.instrument.nu << "\n";
-  if (curve.status == ShellFeStatus::ok) {
+  if (curve.status == SampleStatus::ok) {
     print("k_N_per_m", curve.stiffness);
     print("k_measured_N_per_m", curve.measured_stiffness);
     print("contact_radius_um", curve.window_contact_radius * 1e6);

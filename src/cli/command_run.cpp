@@ -7,21 +7,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
-#include <optional>
 #include <string>
+#include <utility>
 
 #include "commands.hpp"
 #include "growthuq/campaign/campaign_file.hpp"
-#include "campaign/campaign_outputs.hpp"
-#include "growthuq/campaign/campaign_run.hpp"
-#include "campaign/checkpoint.hpp"
-#include "campaign/checkpoint_manifest.hpp"
-#include "campaign/progress.hpp"
-#include "campaign/run_footprint.hpp"
-#include "campaign/run_time_estimate.hpp"
+#include "growthuq/campaign/run_campaign.hpp"
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/interrupt.hpp"
 #include "growthuq/core/printable.hpp"
-#include "core/interrupt.hpp"
 #include "growthuq/pool/pool.hpp"
 #include "campaign_flags.hpp"
 #include "options.hpp"
@@ -31,7 +25,7 @@ namespace growthuq::cli {
 
 namespace {
 
-struct RunOptions {
+struct RunFlags {
   std::string campaign;
   CampaignFlags flags;
   std::string resume;  // output directory of an interrupted run
@@ -52,7 +46,7 @@ std::string command_line_of(const Arguments& arguments) {
 
 // --resume takes everything that decides the result from the checkpoint; an option that could
 // change it is refused rather than silently ignored or applied.
-void check_resume_options(const RunOptions& options, const po::variables_map& values) {
+void check_resume_options(const RunFlags& options, const po::variables_map& values) {
   const std::string where(location);
   if (!values.count("resume")) {
     if (options.campaign.empty()) throw missing_argument("run", usage, "the campaign file");
@@ -75,95 +69,33 @@ void check_resume_options(const RunOptions& options, const po::variables_map& va
   if (options.no_checkpoint) throw InputError(where, "--no-checkpoint cannot be combined with --resume");
 }
 
-// An edited campaign file does not change a resumed run (it finishes the run as started, from
-// the text stored in the manifest), but the user who edited it should hear so: one line.
-void warn_if_campaign_file_differs(const CheckpointManifest& manifest, const std::string& manifest_path) {
-  const CampaignFileNow now = campaign_file_now(manifest);
-  if (now == CampaignFileNow::unchanged) return;
-  std::cerr << printable("growthuq run: warning: " + locate(manifest, manifest.campaign_path) +
-                         (now == CampaignFileNow::changed ? " changed since the run started" : " cannot be read now") +
-                         "; resuming with the campaign text stored in " + manifest_path +
-                         " (to run the file as it is now, start the run again with --force)")
-            << "\n";
-}
-
-// The checkpoint's campaign, after rank 0 has checked that nothing it read has changed.
-Campaign resumed(const std::string& directory, Pool& pool, OutputSettings& settings) {
-  const std::string manifest_path = checkpoint_manifest_path(directory);
-  std::string text;
-  on_coordinator(pool, [&] {
-    text = read_checkpoint_manifest_text(directory);
-    const CheckpointManifest manifest = parse_manifest(text, manifest_path);
-    verify_manifest(manifest, manifest_path);
-    warn_if_campaign_file_differs(manifest, manifest_path);
-  });
-  text = pool.broadcast(text);
-  const CheckpointManifest manifest = parse_manifest(text, manifest_path);
-  settings.command_line = manifest.command_line;  // results.h5 as the uninterrupted run writes it
-  settings.checkpointing = Checkpointing::resume;
-  return resumed_campaign(manifest, directory);
-}
-
-int run_campaign_command(const RunOptions& options, const po::variables_map& values, const Arguments& arguments, Pool& pool) {
-  check_resume_options(options, values);
-  OutputSettings settings;
-  settings.overwrite = options.force ? Overwrite::allow : Overwrite::refuse;
-  settings.progress = pool.is_coordinator() ? choose_progress_mode(options.quiet) : ProgressMode::none;
-  settings.line_reports = !options.summary_only;
-  std::optional<PreparedCampaign> prepared;
+int run_campaign_command(const RunFlags& flags, const po::variables_map& values, const Arguments& arguments, Pool& pool) {
+  check_resume_options(flags, values);
+  RunOptions options;
+  options.overwrite = flags.force ? Overwrite::allow : Overwrite::refuse;
+  options.checkpoint = !flags.no_checkpoint;
+  options.stop_on_signals = true;
+  options.progress = choose_progress_mode(flags.quiet);
+  options.line_reports = !flags.summary_only;
+  options.caller = std::string(location);
+  options.report = &std::cout;
+  options.log = &std::cerr;
+  RunSummary summary;
   if (values.count("resume")) {
-    prepared.emplace(resumed(options.resume, pool, settings), pool, settings.progress, std::cerr);
+    summary = resume_campaign(flags.resume, pool, options);
   } else {
-    Campaign campaign = read_campaign_on_pool(options.campaign, pool);
-    const CampaignOverrides overrides = options.flags.overrides(values, location);
-    apply_overrides(campaign, overrides);
-    // The output directory is checked again under its lock (campaign_outputs.hpp); here, before
-    // a raw-data campaign's curve fits and the designs, so a refusal comes at once.
-    on_coordinator(pool, [&] { check_output_directory(campaign, settings.overwrite); });
-    prepared.emplace(std::move(campaign), pool, settings.progress, std::cerr);
-    settings.command_line = command_line_of(arguments);
-    if (!options.no_checkpoint) {
-      settings.checkpointing = Checkpointing::start;
-      on_coordinator(pool, [&] {
-        settings.manifest = make_checkpoint_manifest(prepared->campaign(), overrides, settings.command_line);
-      });
-    }
+    Campaign campaign = read_campaign_on_pool(flags.campaign, pool);
+    options.overrides = flags.flags.overrides(values, location);
+    options.command_line = command_line_of(arguments);
+    summary = run_campaign(std::move(campaign), pool, options);
   }
-
-  // A run this machine cannot hold is refused now rather than killed part way (run_footprint.hpp).
-  const bool resuming = values.count("resume") != 0;
-  on_coordinator(pool, [&] {
-    const RunShape shape = run_shape(*prepared, !resuming && settings.checkpointing == Checkpointing::start);
-    // The count is named where the user gave it.
-    const bool from_flag = !resuming && values.count("samples") != 0;
-    const std::string where = resuming ? checkpoint_manifest_path(options.resume) : from_flag ? std::string(location) : options.campaign;
-    require_room(estimate_run_footprint(shape), machine_room(pool.processes_on_this_machine(), prepared->campaign().output_dir),
-                 where, resuming ? "samples" : from_flag ? "--samples" : "[campaign] samples");
-    // Finite-element samples take minutes each: how long the run will take, before it starts,
-    // with --quiet too (it is no progress report: a run of days must not start without a word).
-    if (const auto time = estimate_shell_fe_time(*prepared)) {
-      std::string text = describe_shell_fe_time(*time, pool.size());
-      // The checkpoint's finished samples are read later, by the pool: the count above is the
-      // whole run's, so for a resumed run it bounds the time from above.
-      if (resuming) text.insert(text.size() - 1, "; at most that: the samples the checkpoint holds are not run again");
-      std::cerr << "growthuq run: " << text << std::flush;
-    }
-  });
-
-  // From here a first Ctrl-C or SIGTERM stops the pool at the next chunk (the coordinator's
-  // signal decides for every process); a second one ends the process.
-  const InterruptHandlers handlers;
-  pool.stop_when([] { return interrupt_signal(); });
-  CampaignOutcome outcome;
-  try {
-    outcome = run_campaign_with_outputs(*prepared, pool, settings, std::cout, std::cerr);
-  } catch (const RunInterrupted& interrupted) {
-    if (pool.is_coordinator()) std::cerr << "growthuq run: " << printable(interrupted.what()) << "\n";
-    return exit_status_of_signal(interrupted.reason());
+  if (!summary.completed) {
+    if (pool.is_coordinator()) std::cerr << "growthuq run: " << printable(summary.stop_message) << "\n";
+    return exit_status_of_signal(summary.stop_reason);
   }
   if (std::getenv("GROWTHUQ_TIMINGS") != nullptr) {
     // One line per process, for measuring how the work is shared (tools/bench/bench-campaign-scaling).
-    const RunTimings& t = outcome.run.timings;
+    const RunTimings& t = summary.timings;
     std::fprintf(stderr,
                  "growthuq run: timings of process %d of %d [s]: design %.3f evaluation %.3f sharing %.3f statistics %.3f "
                  "observer %.3f\n",
@@ -175,7 +107,7 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
 }  // namespace
 
 int run_run(const Arguments& arguments) {
-  RunOptions options;
+  RunFlags options;
   po::options_description described("options");
   described.add_options()
       ("campaign", po::value(&options.campaign), "campaign file (INI; relative paths in it start at its folder)");

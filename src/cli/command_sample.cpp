@@ -11,7 +11,7 @@
 #include <string>
 
 #include "commands.hpp"
-#include "campaign/run_footprint.hpp"
+#include "growthuq/campaign/run_footprint.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/printable.hpp"
 #include "growthuq/core/numbers.hpp"

@@ -12,8 +12,8 @@
 #include <string>
 
 #include "commands.hpp"
-#include "core/interrupt.hpp"
-#include "io/hdf5_exit.hpp"
+#include "growthuq/core/interrupt.hpp"
+#include "growthuq/io/hdf5_exit.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/printable.hpp"
 #include "options.hpp"

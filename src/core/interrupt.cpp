@@ -1,4 +1,4 @@
-#include "core/interrupt.hpp"
+#include "growthuq/core/interrupt.hpp"
 
 #include <unistd.h>
 

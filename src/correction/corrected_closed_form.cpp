@@ -117,7 +117,7 @@ CorrectedInverse corrected_inverse(double k_measured, const TubeDiameters& diame
     result.p = result.E = nan;
     return result;
   }
-  const fe::FarFieldInverse far = fe::far_field_inverse(fe::to_far_field_law(correction.law), diameters.lambda,
+  const fe::FarFieldInverse far = fe::far_field_inverse(fe::far_field_law(correction.law), diameters.lambda,
                                                         h / diameters.d0, instrument.poisson_ratio);
   if (far.status != fe::FarFieldInverseStatus::ok) {
     result.status = SampleStatus::no_inflation_state;
@@ -192,7 +192,7 @@ Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOp
     const TurgorResult turgor = invert_turgor(point.k, diameters, instrument);
     if (turgor.status != SampleStatus::ok) continue;
     const ModulusResult modulus = invert_modulus(turgor.p, diameters, point.h);
-    const fe::FarFieldInverse far = fe::far_field_inverse(fe::to_far_field_law(options.law), diameters.lambda,
+    const fe::FarFieldInverse far = fe::far_field_inverse(fe::far_field_law(options.law), diameters.lambda,
                                                           point.h / point.d0, poisson_ratio);
     if (modulus.status != SampleStatus::ok || far.status != fe::FarFieldInverseStatus::ok) continue;
     groups.push_back(correction_log_groups(point.k, diameters, point.h, point.rho, correction));

@@ -12,7 +12,7 @@
 #include <sstream>
 #include <vector>
 
-#include "core/interrupt.hpp"
+#include "growthuq/core/interrupt.hpp"
 #include "growthuq/core/error.hpp"
 #include "io/hdf5_output_file.hpp"
 #include "growthuq/core/numbers.hpp"

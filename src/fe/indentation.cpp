@@ -66,7 +66,7 @@ IndentationCurve indent(const IndentationInput& input, const ShellFeOptions& opt
     problem.thickness = fe::far_field_unstressed_thickness(options.law, problem.pressure, input.thickness / d0,
                                                            input.instrument.poisson_ratio);
     if (!(problem.thickness > 0)) {
-      curve.status = ShellFeStatus::burst;
+      curve.status = SampleStatus::burst;
       curve.message = "the far-field tube bursts at this p/E and turgid thickness";
       return curve;
     }
@@ -77,7 +77,7 @@ IndentationCurve indent(const IndentationInput& input, const ShellFeOptions& opt
       const fe::ForwardResult inflated = fe::simulate_inflation(problem);
       curve.newton_iterations += inflated.newton_iterations;
       if (inflated.status != fe::FeStatus::ok || !(inflated.thickness_stretch > 0)) {
-        curve.status = fe::to_shell_fe_status(inflated.status);
+        curve.status = fe::to_sample_status(inflated.status);
         curve.message = "inflation for the turgid thickness: " + inflated.message;
         return curve;
       }
@@ -98,7 +98,7 @@ IndentationCurve indent(const IndentationInput& input, const ShellFeOptions& opt
     const fe::ForwardResult result = fe::simulate_forward(problem);
     fe::curve_in_si(result, d0, E, curve);
     if (keep_field) curve.field = fe::field_in_si(result, d0, E);
-    curve.status = fe::to_shell_fe_status(result.status);
+    curve.status = fe::to_sample_status(result.status);
     curve.message = result.message;
     const fe::WindowFit fit = fe::fit_force_window(curve.depth, curve.force, low, high);
     if (fit.status == fe::WindowFitStatus::ok) {
@@ -113,16 +113,16 @@ IndentationCurve indent(const IndentationInput& input, const ShellFeOptions& opt
       }
       // A solver failure beyond the window's top leaves k intact: k is the value, the curve
       // simply ends early (its status is kept in the message).
-      if (curve.status != ShellFeStatus::ok) {
+      if (curve.status != SampleStatus::ok) {
         curve.message = "k from the curve up to where the solver stopped (" + std::string(to_string(curve.status)) +
                         (curve.message.empty() ? "" : ": " + curve.message) + ")";
-        curve.status = ShellFeStatus::ok;
+        curve.status = SampleStatus::ok;
       }
       break;
     }
-    if (curve.status != ShellFeStatus::ok) break;  // the solver's own failure, before the window's top
+    if (curve.status != SampleStatus::ok) break;  // the solver's own failure, before the window's top
     if (!automatic || attempt == 2 || depth >= fe::deepest_automatic_depth * d0) {
-      curve.status = ShellFeStatus::window_not_reached;
+      curve.status = SampleStatus::window_not_reached;
       curve.message = "the force reached " + format_double(fit.max_force * 1e6) + " uN at " +
                       format_double(curve.depth.empty() ? 0.0 : curve.depth.back() * 1e6) + " um, below the window's top " +
                       format_double(high * 1e6) + " uN" + (automatic ? "" : " (a larger --depth-um reaches it)");

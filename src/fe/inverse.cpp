@@ -23,7 +23,7 @@ bool positive_finite(double value) { return std::isfinite(value) && value > 0.0;
 
 // What the inflation step found: the dimensionless state the force curve is computed at.
 struct Inflated {
-  ShellFeStatus status = ShellFeStatus::ok;
+  SampleStatus status = SampleStatus::ok;
   std::string message;
   double pressure = 0.0;   // p/E
   double thickness = 0.0;  // h0/d0
@@ -34,7 +34,7 @@ struct Inflated {
 double unstressed_at(ShellFeLaw law, double p_over_t, double turgid, double nu) {
   double thickness = turgid;
   for (int pass = 0; pass < 100; ++pass) {
-    const fe::FarFieldInflation state = fe::far_field_inflation(fe::to_far_field_law(law), p_over_t * thickness, thickness, nu);
+    const fe::FarFieldInflation state = fe::far_field_inflation(fe::far_field_law(law), p_over_t * thickness, thickness, nu);
     if (state.burst || !(state.thickness_stretch > 0)) return 0.0;
     const double next = turgid / state.thickness_stretch;
     if (std::abs(next - thickness) <= 1e-13 * next) return next;
@@ -53,9 +53,9 @@ Inflated inflate(const ShellFeMeasurement& m, const Instrument& instrument, cons
   const double nu = instrument.poisson_ratio;
   // FE1's closed-form far-field inverse: the membrane state depends on p/E and h0/d0 only
   // through G = (p/E)/(h0/d0), and G follows explicitly from the hoop stretch.
-  const fe::FarFieldInverse far = fe::far_field_inverse(fe::to_far_field_law(options.law), lambda, turgid, nu);
+  const fe::FarFieldInverse far = fe::far_field_inverse(fe::far_field_law(options.law), lambda, turgid, nu);
   if (far.status != fe::FarFieldInverseStatus::ok) {
-    inflated.status = ShellFeStatus::no_inflation_state;
+    inflated.status = SampleStatus::no_inflation_state;
     inflated.message = std::string("far field at d/d0 = ") + format_double(lambda) + ": " +
                        (far.status == fe::FarFieldInverseStatus::beyond_pressure_maximum ? "past the pressure maximum (burst)"
                         : far.status == fe::FarFieldInverseStatus::thickness_collapsed
@@ -81,7 +81,7 @@ Inflated inflate(const ShellFeMeasurement& m, const Instrument& instrument, cons
     inverse.newton_iterations += result.newton_iterations;
     failed = result.status != fe::FeStatus::ok || !(h0 > 0) || !(result.turgid_diameter > 0);
     if (failed) {
-      inflated.status = fe::to_shell_fe_status(result.status == fe::FeStatus::ok ? fe::FeStatus::burst : result.status);
+      inflated.status = fe::to_sample_status(result.status == fe::FeStatus::ok ? fe::FeStatus::burst : result.status);
       inflated.message = "finite-element inflation: " + result.message;
       return std::numeric_limits<double>::quiet_NaN();
     }
@@ -94,14 +94,14 @@ Inflated inflate(const ShellFeMeasurement& m, const Instrument& instrument, cons
   inverse.far_field_diameter_error = r;
   // The far field's slope d(ln lambda)/d(ln P), by a central difference of the closed solution.
   const auto far_lambda = [&](double at) {
-    return fe::far_field_inflation(fe::to_far_field_law(options.law), std::exp(at) * far.h0_over_d0, far.h0_over_d0, nu).hoop_stretch;
+    return fe::far_field_inflation(fe::far_field_law(options.law), std::exp(at) * far.h0_over_d0, far.h0_over_d0, nu).hoop_stretch;
   };
   double slope = (std::log(far_lambda(u + 1e-4)) - std::log(far_lambda(u - 1e-4))) / 2e-4;
   if (!(std::isfinite(slope) && slope > 0)) slope = 1.0;
   double previous_u = u, previous_r = r;
   for (int solve = 1; std::abs(r) > options.inflation_tolerance; ++solve) {
     if (solve >= 6) {
-      inflated.status = ShellFeStatus::no_inflation_state;
+      inflated.status = SampleStatus::no_inflation_state;
       inflated.message = "finite-element inflation did not reach d/d0 = " + format_double(lambda) + " in 6 solves (off by " +
                          format_double(r) + ")";
       return inflated;
@@ -127,7 +127,7 @@ ShellFeInverse invert_indentation(const ShellFeMeasurement& m, const Instrument&
   validate(instrument, "shell_fe inverse");
   fe::check_shell_poisson(instrument.poisson_ratio, "shell_fe inverse");
   ShellFeInverse inverse;
-  const auto finish = [&](ShellFeStatus status, std::string message) {
+  const auto finish = [&](SampleStatus status, std::string message) {
     inverse.status = status;
     inverse.message = std::move(message);
     inverse.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -135,13 +135,13 @@ ShellFeInverse invert_indentation(const ShellFeMeasurement& m, const Instrument&
   };
   if (!positive_finite(m.stiffness) || !positive_finite(m.thickness) || !positive_finite(m.diameter) ||
       !positive_finite(m.plasmolysed_diameter)) {
-    return finish(ShellFeStatus::invalid_input, "k, h, d and d0 must be positive and finite");
+    return finish(SampleStatus::invalid_input, "k, h, d and d0 must be positive and finite");
   }
-  if (!(m.diameter > m.plasmolysed_diameter)) return finish(ShellFeStatus::invalid_input, "d <= d0: no inflation");
-  if (m.thickness >= 0.5 * m.plasmolysed_diameter) return finish(ShellFeStatus::invalid_input, "h >= d0/2: not a shell");
+  if (!(m.diameter > m.plasmolysed_diameter)) return finish(SampleStatus::invalid_input, "d <= d0: no inflation");
+  if (m.thickness >= 0.5 * m.plasmolysed_diameter) return finish(SampleStatus::invalid_input, "h >= d0/2: not a shell");
   // Probe and tube in series (Eq. (M8), src/mechanics/README.md).
   if (m.stiffness >= instrument.sensor_stiffness_N_per_m) {
-    return finish(ShellFeStatus::stiffness_at_sensor_limit, "measured k >= k_sys");
+    return finish(SampleStatus::stiffness_at_sensor_limit, "measured k >= k_sys");
   }
   const double k = tube_stiffness(m.stiffness, instrument);
   const double d0 = m.plasmolysed_diameter;
@@ -156,7 +156,7 @@ ShellFeInverse invert_indentation(const ShellFeMeasurement& m, const Instrument&
 
   fe::ForwardProblem problem = fe::make_problem(options, d0, instrument.probe_radius_m, instrument.poisson_ratio);
   const Inflated inflated = inflate(m, instrument, options, problem, inverse);
-  if (inflated.status != ShellFeStatus::ok) return finish(inflated.status, inflated.message);
+  if (inflated.status != SampleStatus::ok) return finish(inflated.status, inflated.message);
   inverse.pressure_over_young = inflated.pressure;
   inverse.unstressed_thickness = inflated.thickness * d0;
   problem.pressure = inflated.pressure;
@@ -176,19 +176,19 @@ ShellFeInverse invert_indentation(const ShellFeMeasurement& m, const Instrument&
       inverse.young = match.young;
       inverse.pressure = inflated.pressure * match.young;
       inverse.fitted_stiffness = match.fitted_stiffness;
-      return finish(ShellFeStatus::ok, result.status == fe::FeStatus::ok
+      return finish(SampleStatus::ok, result.status == fe::FeStatus::ok
                                            ? ""
                                            : "E from the curve up to where the solver stopped (" +
                                                  std::string(fe::to_string(result.status)) + ")");
     }
     if (result.status != fe::FeStatus::ok) {
-      return finish(fe::to_shell_fe_status(result.status), "force curve: " + result.message);
+      return finish(fe::to_sample_status(result.status), "force curve: " + result.message);
     }
     if (match.status != fe::ModulusMatchStatus::curve_too_short) {
-      return finish(ShellFeStatus::no_modulus_root, "no E gives k = " + format_double(k) + " N/m over the window");
+      return finish(SampleStatus::no_modulus_root, "no E gives k = " + format_double(k) + " N/m over the window");
     }
     if (attempt == 2 || depth >= fe::deepest_automatic_depth) {
-      return finish(ShellFeStatus::window_not_reached, "the curve to " + format_double(depth) +
+      return finish(SampleStatus::window_not_reached, "the curve to " + format_double(depth) +
                                                            " d0 is too short for the window at the E that k needs");
     }
     depth = std::min(2.0 * depth, fe::deepest_automatic_depth);

@@ -5,10 +5,12 @@
 
 #include <Eigen/Core>
 
+#include "growthuq/fe/shell_fe_vocabulary.hpp"
+
 namespace growthuq::fe {
 
-// CLI names: stvk, log.
-enum class MaterialLaw { saint_venant_kirchhoff, hencky };
+// The solver's name for the public word (growthuq/fe/shell_fe_vocabulary.hpp; CLI names stvk, log).
+using MaterialLaw = ShellFeLaw;
 
 // What an element needs of the wall (dimensionless: young = 1 in the solver).
 struct WallMaterial {

@@ -9,10 +9,13 @@
 #include <string>
 #include <vector>
 
+#include "growthuq/fe/shell_fe_vocabulary.hpp"
+
 namespace growthuq::fe {
 
-enum class Geometry { tube, sphere, file };
-enum class MeshLevel { coarse, standard, fine, finer };  // CLI: coarse | default | fine | finer
+// The solver's names for the public words (growthuq/fe/shell_fe_vocabulary.hpp).
+using Geometry = ShellFeGeometry;
+using MeshLevel = ShellFeMesh;
 
 struct TriangleMesh {
   Eigen::Matrix3Xd positions;             // reference (unstressed) positions, / d0

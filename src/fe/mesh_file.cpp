@@ -11,7 +11,7 @@
 
 #include "fe/mesh.hpp"
 #include "growthuq/core/error.hpp"
-#include "io/read_text_file.hpp"
+#include "growthuq/io/read_text_file.hpp"
 
 namespace growthuq::fe {
 namespace {

@@ -4,22 +4,6 @@
 
 namespace growthuq {
 
-SampleStatus sample_status(ShellFeStatus status) {
-  switch (status) {
-    case ShellFeStatus::ok: return SampleStatus::ok;
-    case ShellFeStatus::invalid_input: return SampleStatus::invalid_input;
-    case ShellFeStatus::not_converged: return SampleStatus::not_converged;
-    case ShellFeStatus::burst: return SampleStatus::burst;
-    case ShellFeStatus::contact_lost: return SampleStatus::contact_lost;
-    case ShellFeStatus::probe_beyond_mesh: return SampleStatus::probe_beyond_mesh;
-    case ShellFeStatus::window_not_reached: return SampleStatus::window_not_reached;
-    case ShellFeStatus::stiffness_at_sensor_limit: return SampleStatus::stiffness_at_sensor_limit;
-    case ShellFeStatus::no_inflation_state: return SampleStatus::no_inflation_state;
-    case ShellFeStatus::no_modulus_root: return SampleStatus::no_modulus_root;
-  }
-  return SampleStatus::not_converged;
-}
-
 double shell_fe_seconds_per_sample(ShellFeMesh mesh) {
   switch (mesh) {
     case ShellFeMesh::coarse: return 3.6;
@@ -55,8 +39,8 @@ void ShellFeTurgorModulus::evaluate(SampleBlock& block) const {
   for (std::size_t i = 0; i < block.size(); ++i) {
     if (status[i] != SampleStatus::ok) continue;
     const ShellFeInverse inverse = invert_indentation({k[i], h[i], d[i], d0[i]}, instrument_, options_);
-    if (inverse.status != ShellFeStatus::ok) {
-      status[i] = sample_status(inverse.status);
+    if (inverse.status != SampleStatus::ok) {
+      status[i] = inverse.status;
       continue;
     }
     p[i] = inverse.pressure;

@@ -130,36 +130,4 @@ void ShellFeOptions::validate(std::string_view location) const {
   }
 }
 
-std::string_view to_string(ShellFeStatus status) {
-  switch (status) {
-    case ShellFeStatus::ok: return "ok";
-    case ShellFeStatus::invalid_input: return "invalid_input";
-    case ShellFeStatus::not_converged: return "not_converged";
-    case ShellFeStatus::burst: return "burst";
-    case ShellFeStatus::contact_lost: return "contact_lost";
-    case ShellFeStatus::probe_beyond_mesh: return "probe_beyond_mesh";
-    case ShellFeStatus::window_not_reached: return "window_not_reached";
-    case ShellFeStatus::stiffness_at_sensor_limit: return "stiffness_at_sensor_limit";
-    case ShellFeStatus::no_inflation_state: return "no_inflation_state";
-    case ShellFeStatus::no_modulus_root: return "no_modulus_root";
-  }
-  return "?";
-}
-
-std::string_view describe(ShellFeStatus status) {
-  switch (status) {
-    case ShellFeStatus::ok: return "a value";
-    case ShellFeStatus::invalid_input: return "an input is outside its domain (non-finite, non-positive, or d <= d0)";
-    case ShellFeStatus::not_converged: return "Newton's method did not converge, even with the load step cut";
-    case ShellFeStatus::burst: return "the wall cannot hold the pressure: no inflated equilibrium";
-    case ShellFeStatus::contact_lost: return "the probe lost contact with the wall";
-    case ShellFeStatus::probe_beyond_mesh: return "the contact left the meshed region";
-    case ShellFeStatus::window_not_reached: return "the force curve never reached the force window's top";
-    case ShellFeStatus::stiffness_at_sensor_limit: return "measured k >= sensor stiffness: the series correction diverges";
-    case ShellFeStatus::no_inflation_state: return "no pressure gives the measured turgid diameter and thickness";
-    case ShellFeStatus::no_modulus_root: return "no modulus gives the measured k over the force window";
-  }
-  return "?";
-}
-
 }  // namespace growthuq

@@ -11,14 +11,10 @@ namespace growthuq::fe {
 ForwardProblem make_problem(const ShellFeOptions& options, double plasmolysed_diameter, double probe_radius,
                             double poisson) {
   ForwardProblem problem;
-  switch (options.geometry) {
-    case ShellFeGeometry::tube: problem.geometry = Geometry::tube; break;
-    case ShellFeGeometry::sphere: problem.geometry = Geometry::sphere; break;
-    case ShellFeGeometry::file: problem.geometry = Geometry::file; break;
-  }
+  problem.geometry = options.geometry;
   problem.mesh_file = options.mesh_file;
   problem.poisson = poisson;
-  problem.law = to_material_law(options.law);
+  problem.law = options.law;
   problem.probe_radius = probe_radius / plasmolysed_diameter;
   problem.tube_length = options.tube_length / plasmolysed_diameter;
   problem.probe_distance = options.probe_distance / plasmolysed_diameter;
@@ -26,12 +22,7 @@ ForwardProblem make_problem(const ShellFeOptions& options, double plasmolysed_di
   problem.bending = options.bending;
   problem.half_model = options.half_model;
   problem.contact = options.contact;
-  switch (options.mesh) {
-    case ShellFeMesh::coarse: problem.mesh = MeshLevel::coarse; break;
-    case ShellFeMesh::standard: problem.mesh = MeshLevel::standard; break;
-    case ShellFeMesh::fine: problem.mesh = MeshLevel::fine; break;
-    case ShellFeMesh::finer: problem.mesh = MeshLevel::finer; break;
-  }
+  problem.mesh = options.mesh;
   return problem;
 }
 
@@ -41,30 +32,22 @@ void check_shell_poisson(double poisson, std::string_view location) {
   }
 }
 
-ShellFeStatus to_shell_fe_status(FeStatus status) {
+SampleStatus to_sample_status(FeStatus status) {
   switch (status) {
-    case FeStatus::ok: return ShellFeStatus::ok;
-    case FeStatus::not_converged: return ShellFeStatus::not_converged;
-    case FeStatus::burst: return ShellFeStatus::burst;
-    case FeStatus::contact_lost: return ShellFeStatus::contact_lost;
-    case FeStatus::probe_beyond_mesh: return ShellFeStatus::probe_beyond_mesh;
-    case FeStatus::invalid_input: return ShellFeStatus::invalid_input;
+    case FeStatus::ok: return SampleStatus::ok;
+    case FeStatus::not_converged: return SampleStatus::not_converged;
+    case FeStatus::burst: return SampleStatus::burst;
+    case FeStatus::contact_lost: return SampleStatus::contact_lost;
+    case FeStatus::probe_beyond_mesh: return SampleStatus::probe_beyond_mesh;
+    case FeStatus::invalid_input: return SampleStatus::invalid_input;
   }
-  return ShellFeStatus::not_converged;
-}
-
-MaterialLaw to_material_law(ShellFeLaw law) {
-  return law == ShellFeLaw::hencky ? MaterialLaw::hencky : MaterialLaw::saint_venant_kirchhoff;
-}
-
-FarFieldLaw to_far_field_law(ShellFeLaw law) {
-  return law == ShellFeLaw::hencky ? FarFieldLaw::hencky : FarFieldLaw::saint_venant_kirchhoff;
+  return SampleStatus::not_converged;
 }
 
 double far_field_unstressed_thickness(ShellFeLaw law, double pressure_over_young, double turgid_thickness,
                                       double poisson) {
   const FarFieldTurgidInflation inflated =
-      far_field_inflation_to_turgid_thickness(to_far_field_law(law), pressure_over_young, turgid_thickness, poisson);
+      far_field_inflation_to_turgid_thickness(far_field_law(law), pressure_over_young, turgid_thickness, poisson);
   return inflated.inflation.burst ? 0.0 : inflated.h0_over_d0;
 }
 

@@ -19,9 +19,7 @@ ForwardProblem make_problem(const ShellFeOptions& options, double plasmolysed_di
 // naming key nu otherwise.
 void check_shell_poisson(double poisson, std::string_view location);
 
-ShellFeStatus to_shell_fe_status(FeStatus status);
-MaterialLaw to_material_law(ShellFeLaw law);
-FarFieldLaw to_far_field_law(ShellFeLaw law);
+SampleStatus to_sample_status(FeStatus status);
 
 // h0/d0 for a turgid h/d0 at p/E in the far field (far_field_inflation_to_turgid_thickness: a
 // bracketed root on the rising branch of the pressure group); 0 when the wall bursts.

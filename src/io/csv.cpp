@@ -2,7 +2,7 @@
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
-#include "read_text_file.hpp"
+#include "growthuq/io/read_text_file.hpp"
 
 namespace growthuq {
 namespace {

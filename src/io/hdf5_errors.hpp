@@ -23,7 +23,7 @@
 #include <memory>
 #include <string>
 
-#include "hdf5_exit.hpp"
+#include "growthuq/io/hdf5_exit.hpp"
 
 namespace growthuq::hdf5 {
 

@@ -13,9 +13,9 @@
 #include <utility>
 #include <vector>
 
-#include "core/interrupt.hpp"
+#include "growthuq/core/interrupt.hpp"
 #include "growthuq/core/error.hpp"
-#include "read_text_file.hpp"
+#include "growthuq/io/read_text_file.hpp"
 
 namespace growthuq {
 

@@ -14,7 +14,7 @@
 #include <utility>
 #include <variant>
 
-#include "core/interrupt.hpp"
+#include "growthuq/core/interrupt.hpp"
 #include "hdf5_output_file.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/units.hpp"

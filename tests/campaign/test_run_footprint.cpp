@@ -18,7 +18,7 @@
 
 #include "growthuq/campaign/campaign_file.hpp"
 #include "growthuq/campaign/campaign_run.hpp"
-#include "campaign/run_footprint.hpp"
+#include "growthuq/campaign/run_footprint.hpp"
 #include "growthuq/core/error.hpp"
 #include "support/cli_run.hpp"
 #include "support/scratch_directory.hpp"

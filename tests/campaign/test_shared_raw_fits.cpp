@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "campaign/progress.hpp"
+#include "growthuq/campaign/progress.hpp"
 #include "campaign/shared_raw_fits.hpp"
 #include "growthuq/pool/pool.hpp"
 #include "growthuq/rawdata/raw_line_file.hpp"

@@ -68,7 +68,7 @@ TEST_CASE("indent: the curve and the name = value lines, as the library computes
   ShellFeOptions options;
   options.mesh = ShellFeMesh::coarse;
   const IndentationCurve curve = indent(input, options);
-  REQUIRE(curve.status == ShellFeStatus::ok);
+  REQUIRE(curve.status == SampleStatus::ok);
   const double k = parse_double(values["k_N_per_m"], "test", "k");
   CHECK(k == doctest::Approx(curve.stiffness).epsilon(1e-3));
   CHECK(parse_double(values["d_um"], "test", "d") == doctest::Approx(curve.turgid_diameter * 1e6).epsilon(1e-6));

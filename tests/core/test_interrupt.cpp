@@ -12,7 +12,7 @@
 #include <initializer_list>
 #include <string>
 
-#include "core/interrupt.hpp"
+#include "growthuq/core/interrupt.hpp"
 
 using namespace growthuq;
 

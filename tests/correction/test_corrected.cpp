@@ -75,7 +75,7 @@ TEST_CASE("a training row is one finite-element inverse: a held-out tube inverte
   for (const TrainingPoint& point : shipped_training()) {
     if (!point.ok || !held_out(point)) continue;
     const ShellFeInverse inverse = invert_indentation({point.k, point.h, point.d, point.d0}, instrument_of(point), ShellFeOptions{});
-    REQUIRE(inverse.status == ShellFeStatus::ok);
+    REQUIRE(inverse.status == SampleStatus::ok);
     CHECK(inverse.pressure == doctest::Approx(point.p).epsilon(3e-3));
     CHECK(inverse.young == doctest::Approx(point.E).epsilon(3e-3));
     return;

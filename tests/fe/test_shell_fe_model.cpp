@@ -47,8 +47,8 @@ TEST_CASE("shell_fe model: E x 10 at fixed p/E gives forces x 10 (and the same d
   input.pressure *= 10;
   input.young *= 10;
   const IndentationCurve stiff = indent(input, options);
-  REQUIRE(soft.status == ShellFeStatus::window_not_reached);
-  REQUIRE(stiff.status == ShellFeStatus::ok);
+  REQUIRE(soft.status == SampleStatus::window_not_reached);
+  REQUIRE(stiff.status == SampleStatus::ok);
   REQUIRE(soft.depth.back() == doctest::Approx(1.0e-6).epsilon(1e-12));
   REQUIRE(soft.depth.size() == stiff.depth.size());
   // Both solve the same dimensionless problem: 10p and 10E are exact here, so p/E is the same
@@ -70,7 +70,7 @@ TEST_CASE("shell_fe model: the inverse recovers the p and E of a forward simulat
   std::vector<double> reported, targets;
   const IndentationCurve forward =
       indent(input, options, false, [&](double depth, double max_depth) { reported.push_back(depth), targets.push_back(max_depth); });
-  REQUIRE(forward.status == ShellFeStatus::ok);
+  REQUIRE(forward.status == SampleStatus::ok);
   REQUIRE(forward.stiffness > 0);
   // The progress follows the last curve's steps: one report per recorded point after the
   // first (depth 0), the depths it reports and the curve's the same (a deepened curve starts
@@ -92,7 +92,7 @@ TEST_CASE("shell_fe model: the inverse recovers the p and E of a forward simulat
   tube.plasmolysed_diameter = input.plasmolysed_diameter;
   const ShellFeInverse inverse = invert_indentation(tube, input.instrument, options);
   INFO(inverse.message);
-  REQUIRE(inverse.status == ShellFeStatus::ok);
+  REQUIRE(inverse.status == SampleStatus::ok);
   // What limits the round trip: (1) p/E from the inflation root, ~1e-7 (above); (2) E from
   // Brent, 1e-10; (3) the inverse's curve is solved to another depth than the forward's, so
   // its load steps differ, and k read from each curve carries the linear interpolation's
@@ -109,11 +109,11 @@ TEST_CASE("shell_fe model: statuses, not exceptions, for measurements outside th
   const IndentationInput input = arabidopsis_like();
   const ShellFeOptions options = coarse();
   ShellFeMeasurement tube{2.0, 200e-9, 5.0e-6, 5.35e-6};  // d < d0
-  CHECK(invert_indentation(tube, input.instrument, options).status == ShellFeStatus::invalid_input);
+  CHECK(invert_indentation(tube, input.instrument, options).status == SampleStatus::invalid_input);
   tube = {2.0, 200e-9, 6.56e-6, 5.35e-6};
   Instrument sensor = input.instrument;
   sensor.sensor_stiffness_N_per_m = 1.5;
-  CHECK(invert_indentation(tube, sensor, options).status == ShellFeStatus::stiffness_at_sensor_limit);
+  CHECK(invert_indentation(tube, sensor, options).status == SampleStatus::stiffness_at_sensor_limit);
   tube = {2.0, 200e-9, 6.56e-6 * 100, 5.35e-6};  // d/d0 = 123: beyond any inflated state
-  CHECK(invert_indentation(tube, input.instrument, options).status == ShellFeStatus::no_inflation_state);
+  CHECK(invert_indentation(tube, input.instrument, options).status == SampleStatus::no_inflation_state);
 }

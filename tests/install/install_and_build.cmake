@@ -1,6 +1,7 @@
 # test_install: installs the build tree into a scratch prefix, checks that exactly the public
 # headers were installed (every include/growthuq/ header, none of src/), then configures, builds
-# and runs the outside project in project/ against that prefix with find_package(growthuq).
+# and runs the outside project in project/ against that prefix with find_package(growthuq); it
+# runs a small campaign in SCRATCH/campaign.
 # Variables: BUILD_DIR (the growthuq build), SOURCE_DIR, SCRATCH (emptied), GENERATOR,
 # CXX_COMPILER.
 foreach(variable BUILD_DIR SOURCE_DIR SCRATCH GENERATOR CXX_COMPILER)
@@ -49,5 +50,5 @@ run("configuring the outside project" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/in
     -G ${GENERATOR} -DCMAKE_CXX_COMPILER=${CXX_COMPILER} -DCMAKE_BUILD_TYPE=Release
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
 run("building the outside project" ${CMAKE_COMMAND} --build ${SCRATCH}/build)
-run("running the outside project" ${SCRATCH}/build/outside)
+run("running the outside project" ${SCRATCH}/build/outside ${SCRATCH}/campaign)
 message(STATUS "${last_output}")

@@ -7,7 +7,7 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/io/csv.hpp"
 #include "io/ini.hpp"
-#include "io/read_text_file.hpp"
+#include "growthuq/io/read_text_file.hpp"
 #include "growthuq/io/output_file.hpp"
 
 using namespace growthuq;

@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 # The floors of the engine: every concept (a folder of include/growthuq/ and src/) may include
 # its own headers and those of concepts below it in CONCEPT_ORDER, never one above, and an
-# installed (public) header may include only public headers. Scans the #include "..." lines
-# and exits non-zero naming every offending include. `--self-test` checks that each rule is
+# installed (public) header may include only public headers, and the command line (src/cli) only
+# public headers and its own, as a program built on the installed library would. Scans the
+# #include "..." lines and exits non-zero naming every offending include. `--self-test` checks that each rule is
 # caught on small made-up trees (and that a clean tree passes).
 import argparse
 import os
@@ -21,6 +22,10 @@ CONCEPT_ORDER = [
     "mechanics", "fe", "correction", "fidelity", "relaxation", "forcecurves", "growth", "rawdata", "synthetic", "pool",
     "campaign", "cli",
 ]
+
+# Concepts written on the installed library alone, as a user's program is: besides their own
+# headers they include only public ones (the command line is the first user of run_campaign).
+PUBLIC_ONLY = {"cli"}
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
 
@@ -76,6 +81,10 @@ def check(root):
                             problems.append(f'{where}: #include "{target}": a public header (include/growthuq/) '
                                             f"includes a private one (src/); it would not be installed")
                             continue
+                        if concept in PUBLIC_ONLY and target_concept != concept:
+                            problems.append(f'{where}: #include "{target}": {concept} is written on the public '
+                                            f"library (include/growthuq/) and its own headers only")
+                            continue
                     else:
                         if public:
                             problems.append(f'{where}: #include "{target}": a public header may include only '
@@ -106,6 +115,8 @@ def self_test():
         write(clean, "src/core/helper.hpp", '#include "growthuq/core/a.hpp"\n')
         write(clean, "src/stats/b.cpp", '#include "growthuq/stats/b.hpp"\n#include "core/helper.hpp"\n'
                                         '#include "local.hpp"\n')
+        write(clean, "src/cli/main.cpp", '#include "growthuq/stats/b.hpp"\n#include "options.hpp"\n'
+                                         '#include "cli/options.hpp"\n')
         if check(clean):
             failures.append(f"a clean tree was refused: {check(clean)}")
 
@@ -117,6 +128,9 @@ def self_test():
             "public includes private": ("include/growthuq/stats/g.hpp", '#include "core/helper.hpp"\n',
                                         'include/growthuq/stats/g.hpp:1: #include "core/helper.hpp": a public header '
                                         "(include/growthuq/) includes a private one"),
+            "command line includes private": ("src/cli/i.cpp", '#include "growthuq/core/a.hpp"\n#include "core/helper.hpp"\n',
+                                              'src/cli/i.cpp:2: #include "core/helper.hpp": cli is written on the public '
+                                              "library"),
             "concept without a floor": ("src/newthing/h.cpp", "\n",
                                         "src/newthing: concept 'newthing' is not in CONCEPT_ORDER"),
         }
@@ -134,7 +148,8 @@ def self_test():
         print(f"self-test: {failure}", file=sys.stderr)
     if not failures:
         print("self-test: a clean tree passes; an upward include, an upward private include, a public header "
-              "including a private one and a concept without a floor are each named")
+              "including a private one, the command line including a private header and a concept without a floor "
+              "are each named")
     return 1 if failures else 0
 
 

@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
     const double start = bench::thread_cpu_seconds();
     curve = indent(input, options);
     forward_cpu.push_back(bench::thread_cpu_seconds() - start);
-    if (curve.status != ShellFeStatus::ok) {
+    if (curve.status != SampleStatus::ok) {
       std::cerr << "bench_fe: forward status " << to_string(curve.status) << ": " << curve.message << "\n";
       return 1;
     }

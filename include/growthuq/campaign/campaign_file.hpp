@@ -85,6 +85,14 @@ struct Campaign {
   DataUncertaintySettings data_uncertainty;
   std::vector<CampaignLine> lines;    // in file order
 
+  // What a campaign file cannot say wrong once its keys are read, checked again for a campaign
+  // built or changed in code (run_campaign calls it): at least one line, no line twice, samples
+  // from 1 to 4294967295, known outputs, an output directory, and the reference line when v is
+  // an output. The first problem as an InputError naming `path` (its line where there is one),
+  // as the campaign reader's messages do; the files the lines name are checked when the
+  // campaign is prepared (PreparedCampaign).
+  void validate() const;
+
   const CampaignLine* find_line(std::string_view name) const;
   Fidelity fidelity_of(const CampaignLine& line) const { return line.fidelity.value_or(fidelity); }
 };

@@ -12,18 +12,14 @@
 
 #include <Eigen/Core>
 
+#include "growthuq/evaluation/sample_status.hpp"
+#include "growthuq/fe/shell_fe_vocabulary.hpp"
 #include "growthuq/mechanics/instrument.hpp"
 #include "growthuq/mechanics/thin_shell.hpp"
 
 namespace growthuq {
 
-// The wall's constitutive law, both linear in E (src/fe/README.md, equations 3-4).
-enum class ShellFeLaw {
-  hencky,                  // "log": Kirchhoff stress = Hooke's law of the logarithmic strain
-  saint_venant_kirchhoff,  // "stvk": second Piola-Kirchhoff stress = Hooke's law of Green's strain
-};
-enum class ShellFeGeometry { tube, sphere, file };
-enum class ShellFeMesh { coarse, standard, fine, finer };  // "coarse" | "default" | "fine" | "finer"
+// ShellFeLaw, ShellFeGeometry, ShellFeMesh: shell_fe_vocabulary.hpp.
 // How the probe and the substrate are kept out of the wall (src/fe/README.md, section 4):
 // exact frictionless contact by an active set (default: no penetration, no parameter), or the
 // smooth penalty it replaced, kept for comparison.
@@ -77,21 +73,8 @@ std::array<double, 2> parse_shell_fe_force_window(std::string_view text, std::st
 // significant digits drop the binary residue of the SI conversion (4e-6 * 1e6 = 3.9999999999999996).
 std::string format_micro(double si);
 
-// Why a simulation or an inverse has no value (never a NaN, never an exception from a batch).
-enum class ShellFeStatus {
-  ok,
-  invalid_input,              // an input outside its domain (non-finite, non-positive, d <= d0)
-  not_converged,              // Newton did not converge even after the load step was cut
-  burst,                      // the wall cannot hold the pressure (no inflated equilibrium)
-  contact_lost,               // the probe lost contact with the wall during the indentation
-  probe_beyond_mesh,          // the contact left the meshed region (tube too short for a)
-  window_not_reached,         // the curve never reached the force window's top
-  stiffness_at_sensor_limit,  // measured k >= k_sys: the series correction diverges
-  no_inflation_state,         // no pressure gives the measured turgid diameter and thickness
-  no_modulus_root,            // no E gives the measured k over the force window
-};
-std::string_view to_string(ShellFeStatus);
-std::string_view describe(ShellFeStatus);  // one sentence for users
+// Why a simulation or an inverse has no value (never a NaN, never an exception from a batch): a
+// SampleStatus (growthuq/evaluation/sample_status.hpp), the finite-element model's own among them.
 
 // Which thickness IndentationInput::thickness is.
 enum class ThicknessKind {
@@ -122,7 +105,7 @@ struct ShellFeField {
 };
 
 struct IndentationCurve {
-  ShellFeStatus status = ShellFeStatus::ok;
+  SampleStatus status = SampleStatus::ok;
   std::string message;                   // why, when status != ok
   std::vector<double> depth;             // indentation delta, m, from 0
   std::vector<double> force;             // probe force, whole tube, N
@@ -164,7 +147,7 @@ struct ShellFeMeasurement {
 };
 
 struct ShellFeInverse {
-  ShellFeStatus status = ShellFeStatus::ok;
+  SampleStatus status = SampleStatus::ok;
   std::string message;
   double pressure = 0.0;              // p, Pa
   double young = 0.0;                 // E, Pa

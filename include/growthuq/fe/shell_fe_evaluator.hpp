@@ -12,9 +12,6 @@
 
 namespace growthuq {
 
-// The sample status of a finite-element status (the shared ones keep their names).
-SampleStatus sample_status(ShellFeStatus status);
-
 // Seconds of one core per inverse (one force curve and up to six inflations) at a mesh level:
 // means with the failed samples in (a campaign's time is the sum, and a sample that does not
 // converge costs several that do). Measured over campaigns with the penalty contact (coarse 8.9 s

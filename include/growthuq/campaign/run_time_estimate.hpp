@@ -27,4 +27,8 @@ std::optional<ShellFeTimeEstimate> estimate_shell_fe_time(const PreparedCampaign
 // processes", plus the bootstrap's share and how to shorten it when it dominates.
 std::string describe_shell_fe_time(const ShellFeTimeEstimate& estimate, int processes);
 
+// The Shapley effects' model runs (line_shapley.cpp): one line per campaign, the runs per line
+// and their ratio to the run's own samples, or nothing when the campaign does not ask for them.
+std::string describe_shapley_cost(const PreparedCampaign& campaign);
+
 }  // namespace growthuq
