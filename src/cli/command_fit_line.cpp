@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "campaign/progress.hpp"
+#include "growthuq/campaign/progress.hpp"
 #include "commands.hpp"
 #include "growthuq/campaign/progress_mode.hpp"
 #include "growthuq/core/error.hpp"
