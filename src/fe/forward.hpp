@@ -68,14 +68,9 @@ struct ForwardResult {
 // state, safe to call concurrently from several threads or processes. Never throws for a
 // numerical failure (status instead); throws InputError only for an unreadable mesh file.
 //
-// Supports. tube: the ring z = 0 pinned; the nodes of the plane y = 0 keep y = 0 (half model: the
-// mirror plane; full model: on the symmetric branch, see forward.cpp). The substrate,
-// if on, is the plane x = min x of the inflated wall. sphere: the probe presses at the pole +x;
-// the great circle x = 0 is held in x (the symmetry plane of a sphere squeezed between two
-// equal probes, so the depth is the pole's own deflection), rotations and the z translation are
-// held at single nodes on the axes; no substrate. file: the node of least x is pinned, the node
-// of largest x (where the probe presses) held in y and z, the node of largest z held in y; the
-// substrate as for the tube.
+// The supports, the symmetry plane, where the probe presses and the part of the wall the turgid
+// state is read from belong to the geometry (tube_geometry.cpp, sphere_geometry.cpp,
+// file_geometry.cpp; the interface in geometry.hpp).
 ForwardResult simulate_forward(const ForwardProblem&);
 // Inflation alone (for the inverse's 1-D root on the turgid diameter, and validation).
 ForwardResult simulate_inflation(const ForwardProblem&);
