@@ -33,8 +33,9 @@ std::string check(const ForwardProblem& p, const WallGeometry& geometry, FeStatu
     return "poisson = " + std::to_string(p.poisson) + ": expected in [0, 0.5)";
   }
   if (!(p.probe_radius > 0)) return "probe radius rho/d0 = " + std::to_string(p.probe_radius) + ": expected > 0";
-  if (!(p.max_depth >= 0 && p.max_depth < 0.5)) {
-    return "max depth / d0 = " + std::to_string(p.max_depth) + ": expected in [0, 0.5)";
+  if (!(p.max_depth >= 0 && p.max_depth <= deepest_automatic_depth)) {
+    return "max depth / d0 = " + std::to_string(p.max_depth) + ": expected in [0, " +
+           std::to_string(deepest_automatic_depth) + "]";
   }
   return geometry.check(status).value_or(std::string());
 }

@@ -38,10 +38,11 @@ struct ForwardProblem {            // all dimensionless
   ContactMethod contact = ContactMethod::active_set;
 };
 
-// The deepest indentation (/ d0) that indent() and the inverse ask for when they choose the depth
-// themselves: beyond about half the diameter, probe and substrate squeeze the tube flat, and
-// simulate_forward refuses depths of d0 / 2 or more.
-inline constexpr double deepest_automatic_depth = 0.45;
+// The deepest indentation (/ d0) that simulate_forward accepts, and that indent() and the inverse
+// ask for when they choose the depth themselves. A soft tube (pme48's lower stiffness) needs more
+// than half its diameter to reach the window's top; the turgid tube is 1.1-1.3 d0 wide, so at
+// 0.6 d0 probe and substrate still hold two walls apart (src/fe/README.md, "Deep curves").
+inline constexpr double deepest_automatic_depth = 0.6;
 
 struct ForwardResult {
   FeStatus status = FeStatus::ok;
