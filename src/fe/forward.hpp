@@ -39,9 +39,9 @@ struct ForwardProblem {            // all dimensionless
 };
 
 // The deepest indentation (/ d0) that simulate_forward accepts, and that indent() and the inverse
-// ask for when they choose the depth themselves. A soft tube (pme48's lower stiffness) needs more
-// than half its diameter to reach the window's top; the turgid tube is 1.1-1.3 d0 wide, so at
-// 0.6 d0 probe and substrate still hold two walls apart (src/fe/README.md, "Deep curves").
+// ask for when they choose the depth themselves. A soft tube (pme48's) can need more than 0.45 d0
+// to reach the window's top; the turgid tube is 1.1-1.3 d0 wide, so at 0.6 d0 probe and
+// substrate still leave half a diameter between them (src/fe/README.md, "Deep curves").
 inline constexpr double deepest_automatic_depth = 0.6;
 
 struct ForwardResult {
