@@ -38,10 +38,11 @@ struct ForwardProblem {            // all dimensionless
   ContactMethod contact = ContactMethod::active_set;
 };
 
-// The deepest indentation (/ d0) that indent() and the inverse ask for when they choose the depth
-// themselves: beyond about half the diameter, probe and substrate squeeze the tube flat, and
-// simulate_forward refuses depths of d0 / 2 or more.
-inline constexpr double deepest_automatic_depth = 0.45;
+// The deepest indentation (/ d0) that simulate_forward accepts, and that indent() and the inverse
+// ask for when they choose the depth themselves. A soft tube (pme48's) can need more than 0.45 d0
+// to reach the window's top; the turgid tube is 1.1-1.3 d0 wide, so at 0.6 d0 probe and
+// substrate still leave half a diameter between them (src/fe/README.md, "Deep curves").
+inline constexpr double deepest_automatic_depth = 0.6;
 
 struct ForwardResult {
   FeStatus status = FeStatus::ok;
@@ -68,14 +69,9 @@ struct ForwardResult {
 // state, safe to call concurrently from several threads or processes. Never throws for a
 // numerical failure (status instead); throws InputError only for an unreadable mesh file.
 //
-// Supports. tube: the ring z = 0 pinned; the nodes of the plane y = 0 keep y = 0 (half model: the
-// mirror plane; full model: on the symmetric branch, see forward.cpp). The substrate,
-// if on, is the plane x = min x of the inflated wall. sphere: the probe presses at the pole +x;
-// the great circle x = 0 is held in x (the symmetry plane of a sphere squeezed between two
-// equal probes, so the depth is the pole's own deflection), rotations and the z translation are
-// held at single nodes on the axes; no substrate. file: the node of least x is pinned, the node
-// of largest x (where the probe presses) held in y and z, the node of largest z held in y; the
-// substrate as for the tube.
+// The supports, the symmetry plane, where the probe presses and the part of the wall the turgid
+// state is read from belong to the geometry (tube_geometry.cpp, sphere_geometry.cpp,
+// file_geometry.cpp; the interface in geometry.hpp).
 ForwardResult simulate_forward(const ForwardProblem&);
 // Inflation alone (for the inverse's 1-D root on the turgid diameter, and validation).
 ForwardResult simulate_inflation(const ForwardProblem&);

@@ -6,6 +6,7 @@
 
 #include "fe/force_window.hpp"
 #include "fe/forward.hpp"
+#include "fe/geometry.hpp"
 #include "fe/shell_fe_problem.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -60,7 +61,7 @@ IndentationCurve indent(const IndentationInput& input, const ShellFeOptions& opt
   problem.pressure = input.pressure / E;
   if (input.thickness_kind == ThicknessKind::unstressed) {
     problem.thickness = input.thickness / d0;
-  } else if (options.geometry == ShellFeGeometry::tube) {
+  } else if (fe::make_wall_geometry(problem)->has_far_field()) {
     // The measured h is the turgid wall's: h0 through the far field's thickness stretch (the
     // inverse maps h the same way, so forward and inverse agree).
     problem.thickness = fe::far_field_unstressed_thickness(options.law, problem.pressure, input.thickness / d0,

@@ -10,6 +10,7 @@
 
 #include "fe/far_field.hpp"
 #include "fe/forward.hpp"
+#include "fe/geometry.hpp"
 #include "fe/modulus_from_curve.hpp"
 #include "fe/shell_fe_problem.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -68,12 +69,12 @@ Inflated inflate(const ShellFeMeasurement& m, const Instrument& instrument, cons
   inflated.thickness = far.h0_over_d0;
   if (!std::isfinite(options.inflation_tolerance)) return inflated;
 
-  const bool tube = options.geometry == ShellFeGeometry::tube;
+  const bool far_field = fe::make_wall_geometry(problem)->has_far_field();
   // State at u = ln P: thickness from the far field (tube) or the last inflation's stretch.
   double u = std::log(far.pressure_over_E / far.h0_over_d0);
   double thickness = far.h0_over_d0;
   const auto residual = [&](double at, double& h0, bool& failed) {
-    if (tube) h0 = unstressed_at(options.law, std::exp(at), turgid, nu);
+    if (far_field) h0 = unstressed_at(options.law, std::exp(at), turgid, nu);
     problem.pressure = std::exp(at) * h0;
     problem.thickness = h0;
     const fe::ForwardResult result = fe::simulate_inflation(problem);
@@ -85,7 +86,7 @@ Inflated inflate(const ShellFeMeasurement& m, const Instrument& instrument, cons
       inflated.message = "finite-element inflation: " + result.message;
       return std::numeric_limits<double>::quiet_NaN();
     }
-    if (!tube) h0 = turgid / result.thickness_stretch;
+    if (!far_field) h0 = turgid / result.thickness_stretch;
     return result.turgid_diameter / lambda - 1.0;
   };
   bool failed = false;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fe/force_window.hpp"
+#include "fe/forward.hpp"
 #include "growthuq/fe/indentation.hpp"
 
 using namespace growthuq;
@@ -15,8 +16,7 @@ namespace {
 
 // Arabidopsis-like: d0 = 5.35 um, turgid h = 200 nm, p = 0.45 MPa, E = 45 MPa (p/E = 0.01,
 // d/d0 about 1.18), rho = 0.25 um: k about 1.9 N/m, so the curve reaches the window's top
-// (4 uN) near 2.1 um, inside the deepest automatic depth (0.45 d0 = 2.4 um). (At p = 0.3 MPa,
-// E = 30 MPa the forces are 2/3 of these and the top lies beyond 0.45 d0.)
+// (4 uN) near 2.1 um, shallower than 0.45 d0 = 2.4 um.
 IndentationInput arabidopsis_like() {
   IndentationInput input;
   input.pressure = 0.45e6;
@@ -116,4 +116,36 @@ TEST_CASE("shell_fe model: statuses, not exceptions, for measurements outside th
   CHECK(invert_indentation(tube, sensor, options).status == SampleStatus::stiffness_at_sensor_limit);
   tube = {2.0, 200e-9, 6.56e-6 * 100, 5.35e-6};  // d/d0 = 123: beyond any inflated state
   CHECK(invert_indentation(tube, input.instrument, options).status == SampleStatus::no_inflation_state);
+}
+
+TEST_CASE("shell_fe model: a soft tube whose window's top lies deeper than 0.45 d0 is answered, and inverted") {
+  // The Arabidopsis-like tube at p = 0.3 MPa, E = 30 MPa under a 0.5 um probe: its curve reaches
+  // the window's top (4 uN) near 2.54 um = 0.47 d0 (measured: growthuq indent --p-MPa 0.3
+  // --E-MPa 30 --h-nm 200 --d0-um 5.35 --rho-um 0.5 --mesh coarse), beyond the 0.45 d0 the
+  // forward and the inverse were held to before (they ended window_not_reached there).
+  IndentationInput input = arabidopsis_like();
+  input.pressure = 0.3e6;
+  input.young = 30e6;
+  input.instrument.probe_radius_m = 0.5e-6;
+  ShellFeOptions options = coarse();
+  options.inflation_tolerance = 1e-8;
+  const IndentationCurve forward = indent(input, options);
+  INFO(forward.message);
+  REQUIRE(forward.status == ShellFeStatus::ok);
+  const fe::WindowFit fit = fe::fit_force_window(forward.depth, forward.force, options.force_window[0], options.force_window[1]);
+  REQUIRE(fit.status == fe::WindowFitStatus::ok);
+  CHECK(fit.top_depth > 0.45 * input.plasmolysed_diameter);
+  CHECK(forward.depth.back() <= fe::deepest_automatic_depth * input.plasmolysed_diameter * (1 + 1e-12));
+
+  ShellFeMeasurement tube;
+  tube.stiffness = forward.measured_stiffness;
+  tube.thickness = input.thickness;
+  tube.diameter = forward.turgid_diameter;
+  tube.plasmolysed_diameter = input.plasmolysed_diameter;
+  const ShellFeInverse inverse = invert_indentation(tube, input.instrument, options);
+  INFO(inverse.message);
+  REQUIRE(inverse.status == ShellFeStatus::ok);
+  // The round trip's bound of the test above (the two curves' load steps differ).
+  CHECK(inverse.young == doctest::Approx(input.young).epsilon(2e-3));
+  CHECK(inverse.pressure == doctest::Approx(input.pressure).epsilon(2e-3));
 }
