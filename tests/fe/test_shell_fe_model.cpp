@@ -131,7 +131,7 @@ TEST_CASE("shell_fe model: a soft tube whose window's top lies deeper than 0.45 
   options.inflation_tolerance = 1e-8;
   const IndentationCurve forward = indent(input, options);
   INFO(forward.message);
-  REQUIRE(forward.status == ShellFeStatus::ok);
+  REQUIRE(forward.status == SampleStatus::ok);
   const fe::WindowFit fit = fe::fit_force_window(forward.depth, forward.force, options.force_window[0], options.force_window[1]);
   REQUIRE(fit.status == fe::WindowFitStatus::ok);
   CHECK(fit.top_depth > 0.45 * input.plasmolysed_diameter);
@@ -144,7 +144,7 @@ TEST_CASE("shell_fe model: a soft tube whose window's top lies deeper than 0.45 
   tube.plasmolysed_diameter = input.plasmolysed_diameter;
   const ShellFeInverse inverse = invert_indentation(tube, input.instrument, options);
   INFO(inverse.message);
-  REQUIRE(inverse.status == ShellFeStatus::ok);
+  REQUIRE(inverse.status == SampleStatus::ok);
   // The round trip's bound of the test above (the two curves' load steps differ).
   CHECK(inverse.young == doctest::Approx(input.young).epsilon(2e-3));
   CHECK(inverse.pressure == doctest::Approx(input.pressure).epsilon(2e-3));
