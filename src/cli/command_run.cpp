@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "growthuq/campaign/campaign_file.hpp"
+#include "campaign/campaign_audit.hpp"
 #include "campaign/campaign_outputs.hpp"
 #include "growthuq/campaign/campaign_run.hpp"
 #include "campaign/checkpoint.hpp"
@@ -130,6 +131,10 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
     }
   }
 
+  // [audit]: its models checked before any sampling, run after the campaign (campaign_audit.hpp).
+  std::optional<CampaignAudit> audit;
+  if (prepared->campaign().audit.samples > 0) audit.emplace(*prepared, pool);
+
   // A run this machine cannot hold is refused now rather than killed part way (run_footprint.hpp).
   const bool resuming = values.count("resume") != 0;
   on_coordinator(pool, [&] {
@@ -157,6 +162,7 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
   CampaignOutcome outcome;
   try {
     outcome = run_campaign_with_outputs(*prepared, pool, settings, std::cout, std::cerr);
+    if (audit) run_audit(*audit, pool, settings.progress, std::cout, std::cerr);
   } catch (const RunInterrupted& interrupted) {
     if (pool.is_coordinator()) std::cerr << "growthuq run: " << printable(interrupted.what()) << "\n";
     return exit_status_of_signal(interrupted.reason());
