@@ -91,7 +91,7 @@ TEST_CASE("multifidelity: refuses what it cannot estimate") {
 TEST_CASE("multifidelity: Gaussian pair, a low fidelity at half the scale: unbiased, rho^2 reduction, coverage") {
   // h = 2 + x, l = 0.5 h + 0.1 + 0.2 e: mean = median of h = 2, bias E[h - l] = 0.9,
   // rho^2 = 0.25 / (0.25 + 0.04). The control-variate variance sigma_h^2 / N (1 - (1 - N/M) rho^2)
-  // (Peherstorfer et al. 2016, Eq. 3.4 for two models) is 0.19 of the N pairs' alone.
+  // (Eq. (T8), src/stats/README.md) is 0.19 of the N pairs' alone.
   const std::size_t n = 30, m = 600;
   std::mt19937_64 engine(32);
   Tally mean, median, bias;
