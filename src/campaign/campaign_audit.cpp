@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 #include <span>
 #include <stdexcept>
 #include <utility>
@@ -22,8 +24,6 @@
 namespace growthuq {
 
 namespace {
-
-constexpr const char* audit_csv_name = "audit.csv";
 
 std::string audit_location(const Campaign& campaign) {
   return campaign.audit.line > 0 ? file_location(campaign.path, campaign.audit.line) : campaign.path;
@@ -191,14 +191,49 @@ std::string padded(std::string text, std::size_t width) {
 
 std::string cell(double value) { return std::isfinite(value) ? format_double(value) : ""; }
 
+// The columns of audit.csv as results.h5's /audit table (NaN where the CSV has an empty cell).
+std::vector<ExtraColumn> audit_h5_columns(const std::vector<AuditRow>& rows) {
+  std::vector<ExtraColumn> columns{{"line"}, {"fidelity"}, {"quantity"}, {"unit"}};
+  const std::vector<std::string> counts{"audit_samples", "pairs", "fast_samples"};
+  for (const std::string& name : counts) columns.push_back({name, {}, {}, {}, "1"});
+  const std::vector<std::string> reals{"fast_mean", "bias", "bias_se", "bias_ci_low", "bias_ci_high", "correlation", "alpha", "mean",
+                                       "mean_se", "mean_ci_low", "mean_ci_high", "mean_se_shell_fe_alone", "median", "median_se",
+                                       "median_ci_low", "median_ci_high"};
+  for (const std::string& name : reals) columns.push_back({name, {}, {}, {}, name == "correlation" || name == "alpha" ? "1" : ""});
+  const double none = std::nan("");
+  for (const AuditRow& row : rows) {
+    columns[0].text.push_back(row.line);
+    columns[1].text.push_back(row.fidelity);
+    columns[2].text.push_back(row.quantity);
+    columns[3].text.push_back(row.unit);
+    columns[4].integer.push_back(static_cast<std::int64_t>(row.audit_samples));
+    columns[5].integer.push_back(static_cast<std::int64_t>(row.pairs));
+    columns[6].integer.push_back(static_cast<std::int64_t>(row.fast_samples));
+    const MultifidelityEstimate* e = row.estimate ? &*row.estimate : nullptr;
+    const auto four = [&](const IntervalEstimate* i) {
+      return std::vector<double>{i ? i->estimate : none, i ? i->standard_error : none, i ? i->low : none, i ? i->high : none};
+    };
+    std::vector<double> values{row.fast_mean};
+    for (const double v : four(e ? &e->bias : nullptr)) values.push_back(v);
+    values.push_back(e ? e->correlation : none);
+    values.push_back(e ? e->alpha : none);
+    for (const double v : four(e ? &e->mean : nullptr)) values.push_back(v);
+    values.push_back(e ? e->high_only_standard_error : none);
+    for (const double v : four(e ? &e->quantile : nullptr)) values.push_back(v);
+    for (std::size_t c = 0; c < values.size(); ++c) columns[7 + c].real.push_back(values[c]);
+  }
+  return columns;
+}
+
 }  // namespace
 
-void print_audit(const std::vector<AuditRow>& rows, const Campaign& campaign, std::ostream& out) {
-  if (rows.empty()) return;
+std::string audit_table(const std::vector<AuditRow>& rows, const Campaign& campaign) {
+  if (rows.empty()) return "";
+  std::ostringstream out;
   out << "\naudit: the fast fidelity against shell_fe (mesh " << to_string(campaign.shell_fe.mesh) << ") on the first "
       << campaign.audit.samples << " samples of each line; bias = mean of shell_fe - fast, with 95 % intervals; shell_fe's\n"
       << "mean and median estimated from the pairs and all " << campaign.samples << " fast samples (multifidelity):\n";
-  const std::size_t widths[] = {18, 12, 9, 7, 11, 30, 7, 30, 30};
+  const std::size_t widths[] = {18, 12, 10, 7, 11, 30, 7, 30, 30};
   const char* headers[] = {"line", "fidelity", "output", "pairs", "fast mean", "bias [95 %]", "rho", "shell_fe mean [95 %]",
                            "shell_fe median [95 %]"};
   for (std::size_t i = 0; i < 9; ++i) out << padded(headers[i], widths[i]);
@@ -214,6 +249,8 @@ void print_audit(const std::vector<AuditRow>& rows, const Campaign& campaign, st
     }
     out << "\n";
   }
+  out << "(" << audit_csv_name << ")\n";
+  return out.str();
 }
 
 std::string audit_csv(const std::vector<AuditRow>& rows) {
@@ -242,21 +279,20 @@ std::string audit_csv(const std::vector<AuditRow>& rows) {
   return text;
 }
 
-void run_audit(const CampaignAudit& audit, Pool& pool, ProgressMode progress, std::ostream& report, std::ostream& log) {
-  std::vector<AuditRow> rows;
+std::vector<AuditRow> run_audit(const CampaignAudit& audit, Pool& pool, ProgressMode progress, std::ostream& log) {
   try {
-    rows = audit.run(pool, progress == ProgressMode::none ? nullptr : &log);
+    return audit.run(pool, progress == ProgressMode::none ? nullptr : &log);
   } catch (const PoolInterrupted& interrupted) {
-    throw RunInterrupted(interrupted.reason(), "audit interrupted: the run's results are written, " + std::string(audit_csv_name) +
-                                                   " is not (run the campaign again with --force for the audit)");
+    throw RunInterrupted(interrupted.reason(), "interrupted during the audit, before the run: nothing was written");
   }
-  on_coordinator(pool, [&] {
-    const Campaign& c = audit.campaign().campaign();
-    const std::string path = (std::filesystem::path(c.output_dir) / audit_csv_name).string();
-    print_audit(rows, c, report);
-    write_file_atomically(path, audit_csv(rows), Overwrite::allow);
-    report << "audit: " << path << "\n";
-  });
+}
+
+std::function<std::string(ResultsH5Writer*, const std::string&)> audit_results(std::vector<AuditRow> rows, const Campaign& campaign) {
+  return [rows = std::move(rows), &campaign](ResultsH5Writer* h5, const std::string& staging) {
+    write_file_atomically((std::filesystem::path(staging) / audit_csv_name).string(), audit_csv(rows), Overwrite::allow);
+    if (h5 != nullptr) h5->write_table("audit", audit_h5_columns(rows));
+    return audit_table(rows, campaign);
+  };
 }
 
 }  // namespace growthuq

@@ -1,11 +1,12 @@
-// The audit of a campaign's fast fidelity ([audit] samples = N, campaigns/README.md "Audit"): the
-// first N samples of each line on closed_form or corrected also run through shell_fe (the
+// The audit of a campaign's fast fidelity ([audit] samples = N, campaigns/README.md "Audit"): before
+// the run, the first N samples of each line on closed_form or corrected also run through shell_fe (the
 // campaign's [shell_fe] options); per line and output, the fast fidelity's bias (mean of
 // shell_fe - fast) and the multifidelity estimates of the finite elements' mean and median
 // (stats/multifidelity.hpp) from the N pairs and the fast fidelity's M samples.
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -15,6 +16,7 @@
 #include "growthuq/campaign/campaign_file.hpp"
 #include "growthuq/campaign/prepared_campaign.hpp"
 #include "growthuq/campaign/progress_mode.hpp"
+#include "growthuq/io/results_h5.hpp"
 #include "growthuq/pool/pool.hpp"
 #include "growthuq/stats/multifidelity.hpp"
 
@@ -65,19 +67,21 @@ class CampaignAudit {
   std::vector<std::string> quantities_;  // audited: the campaign's computed outputs but v
 };
 
-// The rows as a table for the run's summary on stdout: per line and output the fast
-// fidelity's mean, its bias with the 95 % interval, and shell_fe's mean and median estimated.
-void print_audit(const std::vector<AuditRow>& rows, const Campaign& campaign, std::ostream& out);
+// The rows as a table for the run's report (after its summary table): per line and output the
+// fast fidelity's mean, its bias with the 95 % interval, and shell_fe's mean and median.
+std::string audit_table(const std::vector<AuditRow>& rows, const Campaign& campaign);
 
 // audit.csv: one row per line and output, every estimate with its standard error and 95 %
-// interval (columns in campaigns/README.md "Audit").
+// interval (columns in campaigns/README.md "Audit"); the same table as /audit in results.h5.
 std::string audit_csv(const std::vector<AuditRow>& rows);
 
-// The audit after the run (all processes call it; the coordinator reports): run, the table on
-// `report`, audit.csv in the output directory, replacing one an earlier run left there (the
-// run's directory was accepted already: new, or --force). A line's start on `log` unless
-// `progress` is none. RunInterrupted when the pool is stopped: the run's results stay, no
-// audit.csv is written.
-void run_audit(const CampaignAudit& audit, Pool& pool, ProgressMode progress, std::ostream& report, std::ostream& log);
+// The audit, run before the campaign (all processes call it): its rows on the coordinator. A
+// line's start on `log` unless `progress` is none. RunInterrupted when the pool is stopped:
+// nothing is written then.
+std::vector<AuditRow> run_audit(const CampaignAudit& audit, Pool& pool, ProgressMode progress, std::ostream& log);
+
+// What the run writes of the audit with its own results (OutputSettings::extra_results):
+// audit.csv into the staging folder, /audit into results.h5, and the table for the report.
+std::function<std::string(ResultsH5Writer*, const std::string&)> audit_results(std::vector<AuditRow> rows, const Campaign& campaign);
 
 }  // namespace growthuq

@@ -131,7 +131,8 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
     }
   }
 
-  // [audit]: its models checked before any sampling, run after the campaign (campaign_audit.hpp).
+  // [audit]: its models checked before any sampling, run before the campaign, its results
+  // written with the campaign's (campaign_audit.hpp).
   std::optional<CampaignAudit> audit;
   if (prepared->campaign().audit.samples > 0) audit.emplace(*prepared, pool);
 
@@ -161,8 +162,8 @@ int run_campaign_command(const RunOptions& options, const po::variables_map& val
   pool.stop_when([] { return interrupt_signal(); });
   CampaignOutcome outcome;
   try {
+    if (audit) settings.extra_results = audit_results(run_audit(*audit, pool, settings.progress, std::cerr), prepared->campaign());
     outcome = run_campaign_with_outputs(*prepared, pool, settings, std::cout, std::cerr);
-    if (audit) run_audit(*audit, pool, settings.progress, std::cout, std::cerr);
   } catch (const RunInterrupted& interrupted) {
     if (pool.is_coordinator()) std::cerr << "growthuq run: " << printable(interrupted.what()) << "\n";
     return exit_status_of_signal(interrupted.reason());
