@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "campaign/chunk_values.hpp"
+#include "campaign/report_text.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
@@ -173,23 +174,9 @@ std::vector<AuditRow> CampaignAudit::run(Pool& pool, std::ostream* log) const {
 
 namespace {
 
-std::string number(double value) {
-  if (!std::isfinite(value)) return "-";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", value);
-  return text;
-}
-
 std::string with_interval(const IntervalEstimate& estimate) {
-  return number(estimate.estimate) + " [" + number(estimate.low) + ", " + number(estimate.high) + "]";
+  return significant(estimate.estimate) + " [" + significant(estimate.low) + ", " + significant(estimate.high) + "]";
 }
-
-std::string padded(std::string text, std::size_t width) {
-  if (text.size() < width) text.append(width - text.size(), ' ');
-  return text;
-}
-
-std::string cell(double value) { return std::isfinite(value) ? format_double(value) : ""; }
 
 // The columns of audit.csv as results.h5's /audit table (NaN where the CSV has an empty cell).
 std::vector<ExtraColumn> audit_h5_columns(const std::vector<AuditRow>& rows) {
@@ -240,9 +227,9 @@ std::string audit_table(const std::vector<AuditRow>& rows, const Campaign& campa
   out << "\n";
   for (const AuditRow& row : rows) {
     out << padded(row.line, widths[0]) << padded(row.fidelity, widths[1]) << padded(row.quantity + " [" + row.unit + "]", widths[2])
-        << padded(std::to_string(row.pairs) + "/" + std::to_string(row.audit_samples), widths[3]) << padded(number(row.fast_mean), widths[4]);
+        << padded(std::to_string(row.pairs) + "/" + std::to_string(row.audit_samples), widths[3]) << padded(significant(row.fast_mean), widths[4]);
     if (row.estimate) {
-      out << padded(with_interval(row.estimate->bias), widths[5]) << padded(number(row.estimate->correlation), widths[6])
+      out << padded(with_interval(row.estimate->bias), widths[5]) << padded(significant(row.estimate->correlation), widths[6])
           << padded(with_interval(row.estimate->mean), widths[7]) << with_interval(row.estimate->quantile);
     } else {
       out << "fewer than 3 samples with both values: nothing estimated";
@@ -260,16 +247,16 @@ std::string audit_csv(const std::vector<AuditRow>& rows) {
       "median_ci_high\n";
   for (const AuditRow& row : rows) {
     text += row.line + "," + row.fidelity + "," + row.quantity + "," + row.unit + "," + std::to_string(row.audit_samples) + "," +
-            std::to_string(row.pairs) + "," + std::to_string(row.fast_samples) + "," + cell(row.fast_mean);
+            std::to_string(row.pairs) + "," + std::to_string(row.fast_samples) + "," + number_cell(row.fast_mean);
     const auto add = [&](const IntervalEstimate& e) {
-      text += "," + cell(e.estimate) + "," + cell(e.standard_error) + "," + cell(e.low) + "," + cell(e.high);
+      text += "," + number_cell(e.estimate) + "," + number_cell(e.standard_error) + "," + number_cell(e.low) + "," + number_cell(e.high);
     };
     if (row.estimate) {
       const MultifidelityEstimate& e = *row.estimate;
       add(e.bias);
-      text += "," + cell(e.correlation) + "," + cell(e.alpha);
+      text += "," + number_cell(e.correlation) + "," + number_cell(e.alpha);
       add(e.mean);
-      text += "," + cell(e.high_only_standard_error);
+      text += "," + number_cell(e.high_only_standard_error);
       add(e.quantile);
     } else {
       text += std::string(15, ',');

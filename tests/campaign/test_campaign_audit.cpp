@@ -21,30 +21,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> items;
-  std::stringstream stream(text);
-  for (std::string item; std::getline(stream, item, separator);) items.push_back(item);
-  return items;
-}
-
-// The number after "  <name> " in eval's report (NaN when absent).
-double printed_value(const std::string& report, const std::string& name) {
-  for (const std::string& line : split(report, '\n')) {
-    std::stringstream words(line);
-    std::string first, value;
-    if (words >> first >> value && first == name) return std::stod(value);
-  }
-  return std::nan("");
-}
-
 // audit.csv's rows as maps from header to cell.
 std::vector<std::map<std::string, std::string>> csv_rows(const std::string& text) {
-  const std::vector<std::string> lines = split(text, '\n');
-  const std::vector<std::string> header = split(lines.at(0), ',');
+  const std::vector<std::string> lines = split_text(text, '\n');
+  const std::vector<std::string> header = split_text(lines.at(0), ',');
   std::vector<std::map<std::string, std::string>> rows;
   for (std::size_t r = 1; r < lines.size(); ++r) {
-    std::vector<std::string> cells = split(lines[r], ',');
+    std::vector<std::string> cells = split_text(lines[r], ',');
     cells.resize(header.size());
     std::map<std::string, std::string> row;
     for (std::size_t c = 0; c < header.size(); ++c) row[header[c]] = cells[c];
@@ -67,13 +50,13 @@ TEST_CASE("campaign audit: the bias in audit.csv is eval --fidelity shell_fe min
   CHECK(run.out.find("audit: the fast fidelity against shell_fe (mesh coarse) on the first 4 samples") != std::string::npos);
   CHECK(run.err.find("4 of the samples are the audit's") != std::string::npos);  // the time estimate
 
-  const std::vector<std::string> samples = split(slurp(scratch.root / "audit_out" / "samples.csv"), '\n');
+  const std::vector<std::string> samples = split_text(slurp(scratch.root / "audit_out" / "samples.csv"), '\n');
   REQUIRE(samples.size() == 13);
   REQUIRE(samples[0] == "line,sample,k_N_per_m,h_nm,d_um,d0_um,p_MPa,E_MPa,status");
   double fast_sum[2] = {0, 0}, difference_sum[2] = {0, 0};
   std::size_t pairs = 0;
   for (std::size_t r = 1; r <= 12; ++r) {
-    const std::vector<std::string> cells = split(samples[r], ',');
+    const std::vector<std::string> cells = split_text(samples[r], ',');
     REQUIRE(cells.size() == 9);
     REQUIRE(cells[8] == "ok");
     for (int q = 0; q < 2; ++q) fast_sum[q] += std::stod(cells[6 + q]);
