@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -35,12 +36,15 @@ inline std::vector<std::string> split_text(const std::string& text, char separat
 }
 
 // The number after "<name>" at the start of a line of a report such as `growthuq eval`'s
-// ("  p 0.31 MPa"); NaN when no line starts so.
+// ("  p 0.31 MPa"); NaN when no line starts so, or its value is not a number ("-": flagged).
 inline double printed_value(const std::string& report, const std::string& name) {
   for (const std::string& line : split_text(report, '\n')) {
     std::stringstream words(line);
     std::string first, value;
-    if (words >> first >> value && first == name) return std::stod(value);
+    if (!(words >> first >> value) || first != name) continue;
+    char* end = nullptr;
+    const double number = std::strtod(value.c_str(), &end);
+    return end != value.c_str() && *end == '\0' ? number : std::nan("");
   }
   return std::nan("");
 }
