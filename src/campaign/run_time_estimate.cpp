@@ -38,7 +38,7 @@ std::optional<ShellFeTimeEstimate> estimate_shell_fe_time(const PreparedCampaign
     // Every replicate of the bootstrap runs every line's models again.
     estimate.bootstrap_samples += campaign.data_uncertainty.replicates * data_uncertainty_samples(campaign);
   }
-  // The audit runs N samples of every other line at the campaign's [shell_fe] mesh.
+  // The audit runs N samples of every line not at shell_fe, on the campaign's [shell_fe] mesh.
   estimate.audit_samples = audit_fe_samples(campaign);
   if (estimate.audit_samples > 0) {
     estimate.seconds_per_sample = std::max(estimate.seconds_per_sample, shell_fe_seconds_per_sample(campaign.shell_fe.mesh));
