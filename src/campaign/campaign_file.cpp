@@ -242,6 +242,22 @@ void read_data_uncertainty_section(const IniDocument& document, const IniSection
   reader.reject_unknown_keys("replicates, samples");
 }
 
+void read_audit_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
+  SectionReader reader(document, section);
+  campaign.audit.samples = AuditSettings::default_samples;
+  campaign.audit.line = section.line;
+  if (const IniEntry* samples = reader.optional("samples")) {
+    // At most the campaign's samples, checked when the run's count is known (campaign_audit.hpp).
+    campaign.audit.samples = parse_count(samples->value, reader.location(*samples), samples->key, 0, 4294967295ULL);
+    campaign.audit.line = samples->line;
+    if (campaign.audit.samples == 1 || campaign.audit.samples == 2) {
+      throw_bad_value(reader.location(*samples), samples->key, samples->value,
+                      "0 (no audit) or at least 3 (the control variate fits two coefficients)");
+    }
+  }
+  reader.reject_unknown_keys("samples");
+}
+
 // Data uncertainty is on by default for raw-data lines: replicates not stated in the file are
 // the default when a line is given by raw data, 0 otherwise.
 void apply_default_replicates(Campaign& campaign) {
@@ -338,6 +354,8 @@ Campaign parse_campaign(const std::string& text, const std::string& path) {
       read_data_uncertainty_section(document, section, campaign);
     } else if (section.name == "shell_fe") {
       read_shell_fe_section(document, section, campaign);
+    } else if (section.name == "audit") {
+      read_audit_section(document, section, campaign);
     } else if (section.name == "sensitivity") {
       read_sensitivity_section(document, section);  // checked now, read again by the run (sensitivity_settings.hpp)
     } else if (section.name.starts_with("line ")) {
@@ -346,7 +364,7 @@ Campaign parse_campaign(const std::string& text, const std::string& path) {
       throw InputError(document.location(section.line),
                        "unknown section [" + section.name +
                            "] (expected [campaign], [instrument], [growth], [physics_correlation], [data_uncertainty], "
-                           "[shell_fe], [sensitivity] or [line NAME])");
+                           "[shell_fe], [audit], [sensitivity] or [line NAME])");
     }
   }
   if (!has_campaign) throw InputError(path, "no [campaign] section (name, seed, samples, outputs, output_dir)");

@@ -62,9 +62,9 @@ std::string shell_word(const std::string& path) {
 
 // The result files of a run, in the order the commit moves them into the output directory:
 // summary.csv last, so a directory with a summary.csv holds the whole set.
-constexpr std::array<const char*, 8> result_names{results_h5_name,      samples_csv_name, data_uncertainty_csv_name,
+constexpr std::array<const char*, 9> result_names{results_h5_name,      samples_csv_name, data_uncertainty_csv_name,
                                                   comparisons_csv_name, letters_csv_name, sensitivity_csv_name,
-                                                  provenance_json_name, summary_csv_name};
+                                                  audit_csv_name,       provenance_json_name, summary_csv_name};
 
 // Where a run writes its results until they are all complete (output_dir/staging).
 std::string staging_directory(const std::string& output_dir) { return in_directory(output_dir, staging_name); }
@@ -252,6 +252,7 @@ class OutputObserver final : public RunObserver {
     write_sensitivity(sensitivity_in_campaign_order(), shapley_, sobol_, h5_ ? &*h5_ : nullptr, staging_);
     const std::string raw_data_report =
         write_raw_data_outputs(campaign_, summaries_, std::move(uncertainty), h5_ ? &*h5_ : nullptr, staging_);
+    const std::string extra_report = settings.extra_results ? settings.extra_results(h5_ ? &*h5_ : nullptr, staging_) : "";
     // Written whatever the formats: it is what `growthuq report` and a reader of the CSVs cite.
     const RunProvenance provenance = run_provenance(campaign_);
     write_file_atomically(in_directory(staging_, provenance_json_name), provenance_json(provenance), Overwrite::allow);
@@ -270,7 +271,7 @@ class OutputObserver final : public RunObserver {
     std::ostringstream report;
     report << "campaign '" << c.name << "': " << c.lines.size() << " lines x " << c.samples << " samples, seed " << c.seed
            << ", results in " << c.output_dir << "\n\n"
-           << format_summary_table(summaries_) << format_interval_note(c);
+           << format_summary_table(summaries_) << format_interval_note(c) << extra_report;
     if (outcome.run.calibrated) {
       report << "\nkappa = " << format_double(outcome.run.kappa) << " (calibrated on " << c.reference_line
              << ": its predicted median v equals the median of its v_exp, "

@@ -4,6 +4,7 @@
 // validating the campaign.
 #pragma once
 
+#include <functional>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -26,6 +27,8 @@ enum class Checkpointing {
   resume,  // continue the checkpoint of the interrupted run in output_dir (which exists)
 };
 
+class ResultsH5Writer;  // growthuq/io/results_h5.hpp
+
 struct OutputSettings {
   Overwrite overwrite = Overwrite::refuse;  // allow: reuse an existing output directory (--force)
   ProgressMode progress = ProgressMode::none;
@@ -33,6 +36,10 @@ struct OutputSettings {
   std::string command_line;                 // stored in results.h5 (when resuming: the original one)
   Checkpointing checkpointing = Checkpointing::off;
   CheckpointManifest manifest;              // with Checkpointing::start (the coordinator writes it)
+  // Results made beside the run (the audit's, campaign_audit.hpp), written by the coordinator
+  // into the staging folder and results.h5 (null without hdf5) with the run's own and committed
+  // with them; returns the text the report prints after the summary table.
+  std::function<std::string(ResultsH5Writer* h5, const std::string& staging)> extra_results;
 };
 
 // The run stopped on a stop request (Pool::stop_when; Ctrl-C or SIGTERM in the CLI), raised on
@@ -57,6 +64,7 @@ struct CampaignOutcome {
 inline constexpr const char* samples_csv_name = "samples.csv";
 inline constexpr const char* summary_csv_name = "summary.csv";
 inline constexpr const char* results_h5_name = "results.h5";
+inline constexpr const char* audit_csv_name = "audit.csv";
 // The folder in the output directory where a run writes its results until all are complete.
 inline constexpr const char* staging_name = "staging";
 

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "campaign/campaign_outputs.hpp"
+#include "growthuq/campaign/campaign_audit.hpp"
 #include "campaign/checkpoint.hpp"
 #include "campaign/checkpoint_manifest.hpp"
 #include "growthuq/campaign/run_footprint.hpp"
@@ -81,7 +82,10 @@ void check_before_running(const PreparedCampaign& prepared, Pool& pool, const Ou
   });
 }
 
-RunSummary run_prepared(const PreparedCampaign& prepared, Pool& pool, const OutputSettings& settings,
+// The run, after the audit of its fast fidelity where the campaign asks for one ([audit],
+// campaign_audit.hpp): the audit's results are committed with the run's, so an interrupted
+// audit writes nothing.
+RunSummary run_prepared(const PreparedCampaign& prepared, const CampaignAudit* audit, Pool& pool, OutputSettings settings,
                         const RunOptions& options, Streams& streams, bool resuming) {
   const auto start = std::chrono::steady_clock::now();
   RunSummary summary;
@@ -98,6 +102,9 @@ RunSummary run_prepared(const PreparedCampaign& prepared, Pool& pool, const Outp
     pool.stop_when([] { return interrupt_signal(); });
   }
   try {
+    if (audit != nullptr) {
+      settings.extra_results = audit_results(run_audit(*audit, pool, settings.progress, streams.log()), prepared.campaign());
+    }
     CampaignOutcome outcome = run_campaign_with_outputs(prepared, pool, settings, streams.report(), streams.log());
     summary.completed = true;
     summary.kappa = outcome.run.kappa;
@@ -140,8 +147,11 @@ RunSummary run_campaign(Campaign campaign, Pool& pool, const RunOptions& options
   // The count is named where it was given.
   const SamplesOrigin samples = options.overrides.samples ? SamplesOrigin{options.caller, "--samples"}
                                                           : SamplesOrigin{prepared.campaign().path, "[campaign] samples"};
+  // The audit's models are checked before anything is sampled.
+  std::optional<CampaignAudit> audit;
+  if (prepared.campaign().audit.samples > 0) audit.emplace(prepared, pool);
   check_before_running(prepared, pool, settings, samples, false, options.caller, streams.log());
-  return run_prepared(prepared, pool, settings, options, streams, false);
+  return run_prepared(prepared, audit ? &*audit : nullptr, pool, settings, options, streams, false);
 }
 
 RunSummary resume_campaign(const std::string& output_dir, Pool& pool, const RunOptions& options) {
@@ -167,8 +177,11 @@ RunSummary resume_campaign(const std::string& output_dir, Pool& pool, const RunO
   settings.command_line = manifest.command_line;  // results.h5 as the uninterrupted run writes it
   settings.checkpointing = Checkpointing::resume;
   const PreparedCampaign prepared(resumed_campaign(manifest, output_dir), pool, settings.progress, streams.log());
+  // The audit is not checkpointed: a resumed run audits again.
+  std::optional<CampaignAudit> audit;
+  if (prepared.campaign().audit.samples > 0) audit.emplace(prepared, pool);
   check_before_running(prepared, pool, settings, {manifest_path, "samples"}, true, options.caller, streams.log());
-  return run_prepared(prepared, pool, settings, options, streams, true);
+  return run_prepared(prepared, audit ? &*audit : nullptr, pool, settings, options, streams, true);
 }
 
 std::string RunSummary::brief_report() const {

@@ -6,6 +6,8 @@
 
 #include "growthuq/campaign/campaign_file.hpp"
 #include "growthuq/evaluation/evaluator.hpp"
+#include "growthuq/fe/shell_fe_evaluator.hpp"
+#include "growthuq/campaign/campaign_audit.hpp"
 
 namespace growthuq {
 namespace {
@@ -36,8 +38,13 @@ std::optional<ShellFeTimeEstimate> estimate_shell_fe_time(const PreparedCampaign
     // Every replicate of the bootstrap runs every line's models again.
     estimate.bootstrap_samples += campaign.data_uncertainty.replicates * data_uncertainty_samples(campaign);
   }
-  if (estimate.samples == 0) return std::nullopt;
-  estimate.samples += estimate.bootstrap_samples;
+  // The audit runs N samples of every line not at shell_fe, on the campaign's [shell_fe] mesh.
+  estimate.audit_samples = audit_fe_samples(campaign);
+  if (estimate.audit_samples > 0) {
+    estimate.seconds_per_sample = std::max(estimate.seconds_per_sample, shell_fe_seconds_per_sample(campaign.shell_fe.mesh));
+  }
+  if (estimate.samples == 0 && estimate.audit_samples == 0) return std::nullopt;
+  estimate.samples += estimate.bootstrap_samples + estimate.audit_samples;
   estimate.core_seconds = static_cast<double>(estimate.samples) * estimate.seconds_per_sample;
   return estimate;
 }
@@ -51,6 +58,9 @@ std::string describe_shell_fe_time(const ShellFeTimeEstimate& estimate, int proc
   if (estimate.bootstrap_samples > 0) {
     text += "; " + std::to_string(estimate.bootstrap_samples) +
             " of the samples are the data-uncertainty bootstrap's ([data_uncertainty] replicates = 0 switches it off)";
+  }
+  if (estimate.audit_samples > 0) {
+    text += "; " + std::to_string(estimate.audit_samples) + " of the samples are the audit's ([audit] samples = 0 switches it off)";
   }
   return text + "\n";
 }

@@ -12,6 +12,7 @@
 #include "growthuq/campaign/run_campaign.hpp"
 #include "growthuq/campaign/run_footprint.hpp"
 #include "growthuq/campaign/run_time_estimate.hpp"
+#include "growthuq/campaign/campaign_audit.hpp"
 #include "campaign_flags.hpp"
 #include "commands.hpp"
 #include "growthuq/campaign/campaign_run.hpp"
@@ -63,6 +64,15 @@ std::string data_uncertainty_plan(const Campaign& c) {
          " times the run's own ([data_uncertainty] replicates = 0 switches it off)\n";
 }
 
+// The audit's share ([audit], campaign_audit.hpp), which the time line above counts.
+std::string audit_plan(const PreparedCampaign& prepared) {
+  const Campaign& c = prepared.campaign();
+  if (c.audit.samples == 0) return "audit: none (an [audit] section runs the first N samples of each line through shell_fe too)\n";
+  return "audit: the first " + std::to_string(c.audit.samples) + " samples of " + std::to_string(audited_lines(prepared).size()) +
+         " line(s) through shell_fe too (mesh " + std::string(to_string(c.shell_fe.mesh)) + "): " +
+         std::to_string(audit_fe_samples(c)) + " finite-element samples\n";
+}
+
 void print_plan(const PreparedCampaign& prepared, const RunFootprint& footprint, const MachineRoom& room) {
   const Campaign& c = prepared.campaign();
   const std::optional<ShellFeTimeEstimate> shell_fe_time = estimate_shell_fe_time(prepared);
@@ -88,14 +98,14 @@ void print_plan(const PreparedCampaign& prepared, const RunFootprint& footprint,
   const bool bootstrap = c.data_uncertainty.replicates > 0;
   std::cout << "\nresults in " << c.output_dir << ": summary.csv, sensitivity.csv, provenance.json" << (c.formats.csv ? ", samples.csv" : "")
             << (c.formats.hdf5 ? ", results.h5" : "") << (bootstrap ? ", data_uncertainty.csv" : "")
-            << (bootstrap && raw_lines >= 2 ? ", comparisons.csv, letters.csv" : "") << "\n"
+            << (bootstrap && raw_lines >= 2 ? ", comparisons.csv, letters.csv" : "") << (c.audit.samples > 0 ? ", audit.csv" : "") << "\n"
             << "estimated peak memory " << readable_size(footprint.memory_bytes) << " for one process ("
             << (room.memory_bytes ? readable_size(*room.memory_bytes) + " available" : std::string("available memory unknown"))
             << "), disk " << readable_size(footprint.disk_bytes) << " ("
             << (room.disk_bytes ? readable_size(*room.disk_bytes) + " free there" : std::string("free space unknown")) << ")\n"
             << (shell_fe_time ? describe_shell_fe_time(*shell_fe_time, 1)
                               : "time: not estimated (growthuq tradeoff " + c.path + " measures it for sample counts you choose)\n")
-            << data_uncertainty_plan(c) << describe_shapley_cost(prepared) << "checked: nothing was sampled or written\n";
+            << data_uncertainty_plan(c) << audit_plan(prepared) << describe_shapley_cost(prepared) << "checked: nothing was sampled or written\n";
 }
 
 }  // namespace
@@ -133,6 +143,9 @@ int run_check(const Arguments& arguments) {
   // progress on stderr, as the run shows it.
   const std::unique_ptr<Pool> pool = make_serial_pool();
   const PreparedCampaign prepared(std::move(campaign), *pool, choose_progress_mode(quiet), std::cerr);
+  if (prepared.campaign().audit.samples > 0) {
+    const CampaignAudit audit(prepared, *pool);  // its checks, as the run makes them before sampling
+  }
   const RunFootprint footprint = estimate_run_footprint(run_shape(prepared, true));
   const MachineRoom room = machine_room(1, prepared.campaign().output_dir);
   // Named where the count was given, as the run names it.

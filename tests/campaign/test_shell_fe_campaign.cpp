@@ -28,13 +28,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> items;
-  std::stringstream stream(text);
-  for (std::string item; std::getline(stream, item, separator);) items.push_back(item);
-  return items;
-}
-
 // A copy of the campaign whose line paths point at the shipped line files.
 fs::path campaign_copy(const fs::path& root) {
   const std::string source = std::string(GROWTHUQ_SOURCE_DIR);
@@ -46,15 +39,6 @@ fs::path campaign_copy(const fs::path& root) {
   return root / "fidelities.ini";
 }
 
-// The number after "  <name> " in eval's report (NaN when absent).
-double printed_value(const std::string& report, const std::string& name) {
-  for (const std::string& line : split(report, '\n')) {
-    std::stringstream words(line);
-    std::string first, value;
-    if (words >> first >> value && first == name) return std::stod(value);
-  }
-  return std::nan("");
-}
 
 std::size_t records_in(const fs::path& log) {
   std::error_code error;
@@ -73,7 +57,7 @@ TEST_CASE("shell_fe campaign: samples equal eval's inverse; killed between sampl
   const CliOutcome reference = run_in(scratch.root / "reference", cli(arguments));
   REQUIRE_MESSAGE(reference.exit_code == 0, reference.err);
   const std::string samples = slurp(scratch.root / "reference" / "out" / "samples.csv");
-  const std::vector<std::string> rows = split(samples, '\n');
+  const std::vector<std::string> rows = split_text(samples, '\n');
   REQUIRE(rows.size() >= 2);
   CHECK(rows[0] == "line,sample,k_N_per_m,h_nm,d_um,d0_um,p_MPa,E_MPa,status");
 
@@ -84,7 +68,7 @@ TEST_CASE("shell_fe campaign: samples equal eval's inverse; killed between sampl
   // iteration apart).
   bool compared = false;
   for (std::size_t r = 1; r < rows.size() && !compared; ++r) {
-    const std::vector<std::string> cells = split(rows[r], ',');
+    const std::vector<std::string> cells = split_text(rows[r], ',');
     if (cells.size() != 9 || cells[0] != "wild_type" || cells[8] != "ok") continue;
     const CliOutcome eval = run_in(scratch.root, cli({"eval", "--fidelity", "shell_fe", "--mesh", "coarse", "--rho-um", "0.5",
                                                       "--k", cells[2], "--h-nm", cells[3], "--d-um", cells[4], "--d0-um", cells[5]}));

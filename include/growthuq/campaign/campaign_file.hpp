@@ -59,6 +59,18 @@ struct DataUncertaintySettings {
   std::size_t samples = 0;            // Latin hypercube samples per line and replicate; 0: the default
 };
 
+// [audit]: how far the fast fidelity (closed_form, corrected) is from shell_fe, from the first
+// `samples` samples of each line run through both (growthuq/campaign/campaign_audit.hpp). Off without the
+// section or with samples = 0.
+struct AuditSettings {
+  // Chosen in campaigns/README.md ("Audit"): 20 pairs bound the bias to about +-0.5 of the
+  // spread of the differences (95 %) and leave the control variate 18 degrees of freedom.
+  static constexpr std::size_t default_samples = 20;
+
+  std::size_t samples = 0;  // finite-element samples per line; 0: no audit
+  long line = 0;            // of the samples key (or the section), for messages
+};
+
 struct OutputFormats {
   bool csv = true;
   bool hdf5 = true;
@@ -83,6 +95,7 @@ struct Campaign {
   std::string output_dir;             // relative to the current directory
   OutputFormats formats;
   DataUncertaintySettings data_uncertainty;
+  AuditSettings audit;
   std::vector<CampaignLine> lines;    // in file order
 
   // What a campaign file cannot say wrong once its keys are read, checked again for a campaign

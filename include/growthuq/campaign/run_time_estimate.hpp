@@ -16,11 +16,12 @@ namespace growthuq {
 struct ShellFeTimeEstimate {
   std::size_t samples = 0;            // finite-element samples: the run's and its bootstrap's
   std::size_t bootstrap_samples = 0;  // of which the data-uncertainty bootstrap's
+  std::size_t audit_samples = 0;      // and the audit's of the fast lines ([audit], campaign_audit.hpp)
   double seconds_per_sample = 0.0;   // the slowest line's models'
   double core_seconds = 0.0;          // samples x seconds_per_sample
 };
 
-// Nothing when no line runs at fidelity shell_fe.
+// Nothing when no line runs at fidelity shell_fe and there is no audit.
 std::optional<ShellFeTimeEstimate> estimate_shell_fe_time(const PreparedCampaign& campaign);
 
 // "fidelity shell_fe: 750 finite-element samples x about 60 s of one core: about 6.3 h with 2
