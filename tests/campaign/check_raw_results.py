@@ -42,8 +42,12 @@ with h5py.File(results + "/results.h5", "r") as f:
         expect(abs(row["aic"] - (4 - 2 * row["log_likelihood"])) < 1e-9 * abs(row["aic"]), "AIC = 2k - 2 logL for " + name)
         expect(0 < row["ks"] < 1 and row["ad"] > 0, "KS and AD of " + name)
     # The values each law was fitted to are the raw files' cells, in the files' order and unit.
-    for name, file, column in [("k", "indentation.csv", "k_N_per_m"), ("h", "tem_sections.csv", "h_nm"),
-                               ("v_exp", "growth.csv", "v_exp_um_per_s")]:
+    # (k comes from the force curves, [force_curves] in raw.ini: its values are the tubes' k with
+    # an ok curve, checked against the force-curve tables below.)
+    tube_k = wt["force_curves/tubes"][:]
+    expect(np.array_equal(wt["fit_data/k"][:], tube_k["k_N_per_m"][tube_k["ok"] > 0]), "fit_data of k: the tubes' k")
+    expect(text(wt["fit_data/k"].attrs["units"]) == text(fits[variables.index("k")]["unit"]), "fit_data unit of k")
+    for name, file, column in [("h", "tem_sections.csv", "h_nm"), ("v_exp", "growth.csv", "v_exp_um_per_s")]:
         stored = wt["fit_data/" + name]
         expect(np.allclose(stored[:], [float(r[column]) for r in table(raw + "/" + file)], rtol=1e-14, atol=0),
                "fit_data of " + name)
