@@ -37,13 +37,14 @@ add_test(NAME test_fe_half_vs_full COMMAND test_fe_balance "--test-case=*half mo
 set_tests_properties(test_fe_half_vs_full PROPERTIES LABELS fe_validation)
 growthuq_test_timeout(test_fe_half_vs_full 900)
 
-# Order 2.3, default level -0.32 % of the extrapolated k (measured 2026-12-02); the fine level
-# alone takes minutes, the slowest test of the suite.
+# Order 2.3, default level -0.32 % of the extrapolated k (the test prints them); the fine level
+# alone takes minutes.
 growthuq_add_test(test_fe_convergence test_fe_convergence.cpp)
 set_tests_properties(test_fe_convergence PROPERTIES LABELS fe_validation)
 growthuq_test_timeout(test_fe_convergence 1800)
-# Default, fine and finer levels: order 2.6, default level -0.27 % of the extrapolated k
-# (measured 2026-12-05); about 4 minutes of one core, run beside the rest.
+# Default, fine and finer levels: k 7.1082, 7.1195, 7.1246 N/m, order 2.32, default level
+# -0.289 % of the extrapolated k (`build/release/tests/fe/test_fe_convergence_thick_wall -s`
+# prints them); 683 s in the full suite on 2 cores, its critical path, run beside the rest.
 growthuq_add_test(test_fe_convergence_thick_wall test_fe_convergence_thick_wall.cpp)
 set_tests_properties(test_fe_convergence_thick_wall PROPERTIES LABELS fe_validation)
 growthuq_test_timeout(test_fe_convergence_thick_wall 1800)
