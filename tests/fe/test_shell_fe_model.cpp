@@ -34,6 +34,17 @@ ShellFeOptions coarse() {
   return options;
 }
 
+// The inverse of what a forward curve measures: its k and turgid diameter, the turgid h and the
+// plasmolysed d0 as a lab records them.
+ShellFeInverse invert_measured(const IndentationCurve& forward, const IndentationInput& input, const ShellFeOptions& options) {
+  ShellFeMeasurement tube;
+  tube.stiffness = forward.measured_stiffness;
+  tube.thickness = input.thickness;  // turgid, as measured
+  tube.diameter = forward.turgid_diameter;
+  tube.plasmolysed_diameter = input.plasmolysed_diameter;
+  return invert_indentation(tube, input.instrument, options);
+}
+
 }  // namespace
 
 TEST_CASE("shell_fe model: E x 10 at fixed p/E gives forces x 10 (and the same diameter)") {
@@ -85,12 +96,7 @@ TEST_CASE("shell_fe model: the inverse recovers the p and E of a forward simulat
   for (std::size_t i = 0; i < last.size(); ++i) CHECK(last[i] == doctest::Approx(forward.depth[i + 1]).epsilon(1e-12));
   CHECK(last.back() <= target * (1 + 1e-12));
 
-  ShellFeMeasurement tube;
-  tube.stiffness = forward.measured_stiffness;
-  tube.thickness = input.thickness;  // turgid, as measured
-  tube.diameter = forward.turgid_diameter;
-  tube.plasmolysed_diameter = input.plasmolysed_diameter;
-  const ShellFeInverse inverse = invert_indentation(tube, input.instrument, options);
+  const ShellFeInverse inverse = invert_measured(forward, input, options);
   INFO(inverse.message);
   REQUIRE(inverse.status == SampleStatus::ok);
   // What limits the round trip: (1) p/E from the inflation root, ~1e-7 (above); (2) E from
@@ -137,12 +143,7 @@ TEST_CASE("shell_fe model: a soft tube whose window's top lies deeper than 0.45 
   CHECK(fit.top_depth > 0.45 * input.plasmolysed_diameter);
   CHECK(forward.depth.back() <= fe::deepest_automatic_depth * input.plasmolysed_diameter * (1 + 1e-12));
 
-  ShellFeMeasurement tube;
-  tube.stiffness = forward.measured_stiffness;
-  tube.thickness = input.thickness;
-  tube.diameter = forward.turgid_diameter;
-  tube.plasmolysed_diameter = input.plasmolysed_diameter;
-  const ShellFeInverse inverse = invert_indentation(tube, input.instrument, options);
+  const ShellFeInverse inverse = invert_measured(forward, input, options);
   INFO(inverse.message);
   REQUIRE(inverse.status == SampleStatus::ok);
   // The round trip's bound of the test above (the two curves' load steps differ).
