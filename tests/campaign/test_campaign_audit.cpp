@@ -2,12 +2,13 @@
 // samples, the first 4 also through shell_fe on the coarse mesh): audit.csv's bias of p and E
 // is the mean of `growthuq eval --fidelity shell_fe` minus the closed form over the same tubes
 // (samples.csv's first 4 rows, an independent path into the finite elements), its fast mean the
-// mean of samples.csv's column, and the table is printed; provenance.json and the report's
-// warnings quote the same bias. A run stopped by SIGTERM during the audit keeps the audit's
-// finished samples in its checkpoint, and --resume reuses them and writes every result file
-// byte for byte as the uninterrupted run does.
+// mean of samples.csv's column, and the table is printed; provenance.json, results.h5's
+// /provenance/audit and the report's warnings quote the same bias. A run stopped by SIGTERM
+// during the audit keeps the audit's finished samples in its checkpoint, and --resume reuses
+// them and writes every result file byte for byte as the uninterrupted run does.
 #include <doctest/doctest.h>
 
+#include <hdf5.h>
 #include <sys/wait.h>
 
 #include <chrono>
@@ -61,8 +62,18 @@ double json_number(const std::string& text, std::size_t from, const std::string&
   const std::string marker = "\"" + key + "\": ";
   const std::size_t at = text.find(marker, from);
   REQUIRE(at != std::string::npos);
-  const std::string value = text.substr(at + marker.size(), 24);
+  const std::string value = text.substr(at + marker.size(), 32);
   return value.rfind("null", 0) == 0 ? std::nan("") : std::stod(value);
+}
+
+// The float64 attribute `name` of the object at `path` in the HDF5 file `file`.
+double h5_attribute(hid_t file, const std::string& path, const std::string& name) {
+  const hid_t attribute = H5Aopen_by_name(file, path.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+  REQUIRE_MESSAGE(attribute >= 0, path << " " << name);
+  double value = std::nan("");
+  CHECK(H5Aread(attribute, H5T_NATIVE_DOUBLE, &value) >= 0);
+  H5Aclose(attribute);
+  return value;
 }
 
 // Four significant digits, as the report prints a number (tools/reporting/tables.py).
@@ -80,7 +91,7 @@ TEST_CASE("campaign audit: the bias in audit.csv is eval --fidelity shell_fe min
   ScratchDirectory scratch("campaign_audit");
   write_campaign(scratch.root);
 
-  const CliOutcome run = run_in(scratch.root, cli({"run", "audited.ini", "--quiet", "--summary-only"}));
+  const CliOutcome run = run_in(scratch.root, cli({"run", "audited.ini", "--quiet", "--summary-only", "--formats", "csv,hdf5"}));
   REQUIRE_MESSAGE(run.exit_code == 0, run.err);
   CHECK(run.out.find("audit: the fast fidelity against shell_fe (mesh coarse) on the first 4 samples") != std::string::npos);
   CHECK(run.err.find("4 of the samples are the audit's") != std::string::npos);  // the time estimate
@@ -130,7 +141,10 @@ TEST_CASE("campaign audit: the bias in audit.csv is eval --fidelity shell_fe min
     CHECK(std::stod(row.at("median")) <= std::stod(row.at("median_ci_high")));
   }
 
-  // provenance.json holds the same bias and interval, and the report's warnings quote them.
+  // provenance.json and results.h5 /provenance/audit hold the same bias and interval, and the
+  // report's warnings quote them.
+  const hid_t h5 = H5Fopen((scratch.root / "audit_out" / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  REQUIRE(h5 >= 0);
   const std::string provenance = slurp(scratch.root / "audit_out" / "provenance.json");
   const std::size_t audit = provenance.find("\"audit\": {\"samples_per_line\": 4, \"high_fidelity\": \"shell_fe\", \"mesh\": \"coarse\"");
   REQUIRE(audit != std::string::npos);
@@ -150,10 +164,15 @@ TEST_CASE("campaign audit: the bias in audit.csv is eval --fidelity shell_fe min
     CHECK(bias == doctest::Approx(std::stod(row.at("bias"))).epsilon(1e-12));
     CHECK(low == doctest::Approx(std::stod(row.at("bias_ci_low"))).epsilon(1e-12));
     CHECK(high == doctest::Approx(std::stod(row.at("bias_ci_high"))).epsilon(1e-12));
+    const std::string group = "provenance/audit/wild_type/" + std::string(quantities[q]);
+    CHECK(h5_attribute(h5, group, "bias") == bias);  // provenance.json's numbers read back to the same double
+    CHECK(h5_attribute(h5, group, "bias_ci_low") == low);
+    CHECK(h5_attribute(h5, group, "bias_ci_high") == high);
     const std::string quoted = std::string(quantities[q]) + " " + four_digits(bias) + " MPa (95 % interval " + four_digits(low) +
                                " to " + four_digits(high) + ", " + std::to_string(pairs) + " pairs)";
     CHECK_MESSAGE(page.find(quoted) != std::string::npos, quoted);
   }
+  H5Fclose(h5);
 }
 
 TEST_CASE("campaign audit: a run stopped during the audit resumes it without redoing its finished samples") {

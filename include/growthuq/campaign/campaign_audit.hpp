@@ -1,9 +1,10 @@
 // The audit of a campaign's fast fidelity ([audit] samples = N, campaigns/README.md "Audit"):
 // before the run's lines, the first N samples of each line on closed_form or corrected also run
 // through shell_fe (the campaign's [shell_fe] options), kept in the run's checkpoint and
-// committed with its results (audit_addition.hpp); per line and output, the fast fidelity's
-// bias (mean of shell_fe - fast) and the multifidelity estimates of the finite elements' mean and median
-// (stats/multifidelity.hpp) from the N pairs and the fast fidelity's M samples.
+// committed with its results (src/campaign/audit_addition.hpp); per line and output, the fast
+// fidelity's bias (mean of shell_fe - fast) and the multifidelity estimates of the finite
+// elements' mean and median (stats/multifidelity.hpp) from the N pairs and the fast fidelity's
+// M samples.
 #pragma once
 
 #include <cstddef>
