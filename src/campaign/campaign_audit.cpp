@@ -48,6 +48,16 @@ std::vector<std::string> variable_names(const PreparedLine& line) {
   return names;
 }
 
+// The samples of an audited line's first `n` that `journal` holds (null: none).
+std::size_t samples_held(const ChunkJournal* journal, std::size_t line, std::size_t n, std::size_t chunk_size) {
+  std::size_t held = 0;
+  for (std::size_t begin = 0; journal != nullptr && begin < n; begin += chunk_size) {
+    const ChunkRange range{begin, std::min(n, begin + chunk_size)};
+    if (journal->holds(line, range)) held += range.end - range.begin;
+  }
+  return held;
+}
+
 // Column `o` of `values` packed by evaluate_chunk, in the quantity's default unit.
 void unpack(std::span<const double> values, std::size_t outputs, std::size_t o, double to_si, ChunkRange range,
             std::vector<double>& column) {
@@ -105,16 +115,22 @@ CampaignAudit::CampaignAudit(const PreparedCampaign& campaign, Pool& pool) : cam
 
 CampaignAudit::~CampaignAudit() = default;
 
-std::vector<AuditRow> CampaignAudit::run(Pool& pool, std::ostream* log) const {
+const std::vector<std::string>& CampaignAudit::computed_outputs() const { return fe_->computed_outputs(); }
+
+std::vector<AuditRow> CampaignAudit::run(Pool& pool, std::ostream* log, ChunkJournal* journal) const {
   const Campaign& c = campaign_.campaign();
   const std::size_t n = c.audit.samples, m = c.samples;
   std::vector<AuditRow> rows;
   pool.set_queued_chunks(2);  // finite-element samples, as the run hands them out (campaign_run.cpp)
-  for (const std::size_t index : lines_) {
+  for (std::size_t audited = 0; audited < lines_.size(); ++audited) {
+    const std::size_t index = lines_[audited];
     const PreparedLine& fast_line = fast_->lines()[index];
     const PreparedLine& fe_line = fe_->lines()[index];
     if (log != nullptr && pool.is_coordinator()) {
-      *log << "growthuq run: audit of line " << fast_line.campaign_line.name << ": " << n << " samples through shell_fe\n" << std::flush;
+      *log << "growthuq run: audit of line " << fast_line.campaign_line.name << ": " << n << " samples through shell_fe";
+      const std::size_t held = samples_held(journal, audited, n, c.shell_fe_chunk_size);
+      if (held > 0) *log << ", " << held << " of them kept by the checkpoint";
+      *log << "\n" << std::flush;
     }
     const LineDesign design = fe_->design(fe_line);  // = fast_->design(fast_line): same variables, seed and count
     const std::vector<std::string>& outputs = fe_->computed_outputs();  // the same in both (same campaign outputs)
@@ -129,8 +145,9 @@ std::vector<AuditRow> CampaignAudit::run(Pool& pool, std::ostream* log) const {
     const auto store = [&](std::vector<std::vector<double>>& into, ChunkRange range, std::span<const double> values) {
       for (std::size_t q = 0; q < quantities_.size(); ++q) unpack(values, outputs.size(), column[q], to_si[q], range, into[q]);
     };
-    pool.run(n, c.shell_fe_chunk_size, [&](ChunkRange range) { return fe_->evaluate_chunk(fe_line, design, range); },
-             [&](ChunkRange range, std::span<const double> values) { store(fe_values, range, values); });
+    const ChunkWork work = [&](ChunkRange range) { return fe_->evaluate_chunk(fe_line, design, range); };
+    const ChunkSink sink = [&](ChunkRange range, std::span<const double> values) { store(fe_values, range, values); };
+    run_with_journal(pool, journal, audited, n, c.shell_fe_chunk_size, work, sink, sink);
     if (!pool.is_coordinator()) continue;
     // The fast fidelity takes microseconds a sample: all M here, in the run's chunks.
     for (std::size_t begin = 0; begin < m; begin += c.chunk_size) {
@@ -176,40 +193,6 @@ namespace {
 
 std::string with_interval(const IntervalEstimate& estimate) {
   return significant(estimate.estimate) + " [" + significant(estimate.low) + ", " + significant(estimate.high) + "]";
-}
-
-// The columns of audit.csv as results.h5's /audit table (NaN where the CSV has an empty cell).
-std::vector<ExtraColumn> audit_h5_columns(const std::vector<AuditRow>& rows) {
-  std::vector<ExtraColumn> columns{{"line"}, {"fidelity"}, {"quantity"}, {"unit"}};
-  const std::vector<std::string> counts{"audit_samples", "pairs", "fast_samples"};
-  for (const std::string& name : counts) columns.push_back({name, {}, {}, {}, "1"});
-  const std::vector<std::string> reals{"fast_mean", "bias", "bias_se", "bias_ci_low", "bias_ci_high", "correlation", "alpha", "mean",
-                                       "mean_se", "mean_ci_low", "mean_ci_high", "mean_se_shell_fe_alone", "median", "median_se",
-                                       "median_ci_low", "median_ci_high"};
-  for (const std::string& name : reals) columns.push_back({name, {}, {}, {}, name == "correlation" || name == "alpha" ? "1" : ""});
-  const double none = std::nan("");
-  for (const AuditRow& row : rows) {
-    columns[0].text.push_back(row.line);
-    columns[1].text.push_back(row.fidelity);
-    columns[2].text.push_back(row.quantity);
-    columns[3].text.push_back(row.unit);
-    columns[4].integer.push_back(static_cast<std::int64_t>(row.audit_samples));
-    columns[5].integer.push_back(static_cast<std::int64_t>(row.pairs));
-    columns[6].integer.push_back(static_cast<std::int64_t>(row.fast_samples));
-    const MultifidelityEstimate* e = row.estimate ? &*row.estimate : nullptr;
-    const auto four = [&](const IntervalEstimate* i) {
-      return std::vector<double>{i ? i->estimate : none, i ? i->standard_error : none, i ? i->low : none, i ? i->high : none};
-    };
-    std::vector<double> values{row.fast_mean};
-    for (const double v : four(e ? &e->bias : nullptr)) values.push_back(v);
-    values.push_back(e ? e->correlation : none);
-    values.push_back(e ? e->alpha : none);
-    for (const double v : four(e ? &e->mean : nullptr)) values.push_back(v);
-    values.push_back(e ? e->high_only_standard_error : none);
-    for (const double v : four(e ? &e->quantile : nullptr)) values.push_back(v);
-    for (std::size_t c = 0; c < values.size(); ++c) columns[7 + c].real.push_back(values[c]);
-  }
-  return columns;
 }
 
 }  // namespace
@@ -264,22 +247,6 @@ std::string audit_csv(const std::vector<AuditRow>& rows) {
     text += "\n";
   }
   return text;
-}
-
-std::vector<AuditRow> run_audit(const CampaignAudit& audit, Pool& pool, ProgressMode progress, std::ostream& log) {
-  try {
-    return audit.run(pool, progress == ProgressMode::none ? nullptr : &log);
-  } catch (const PoolInterrupted& interrupted) {
-    throw RunInterrupted(interrupted.reason(), "interrupted during the audit, before the run: nothing was written");
-  }
-}
-
-std::function<std::string(ResultsH5Writer*, const std::string&)> audit_results(std::vector<AuditRow> rows, const Campaign& campaign) {
-  return [rows = std::move(rows), &campaign](ResultsH5Writer* h5, const std::string& staging) {
-    write_file_atomically((std::filesystem::path(staging) / audit_csv_name).string(), audit_csv(rows), Overwrite::allow);
-    if (h5 != nullptr) h5->write_table("audit", audit_h5_columns(rows));
-    return audit_table(rows, campaign);
-  };
 }
 
 }  // namespace growthuq

@@ -252,9 +252,9 @@ class OutputObserver final : public RunObserver {
     write_sensitivity(sensitivity_in_campaign_order(), shapley_, sobol_, h5_ ? &*h5_ : nullptr, staging_);
     const std::string raw_data_report =
         write_raw_data_outputs(campaign_, summaries_, std::move(uncertainty), h5_ ? &*h5_ : nullptr, staging_);
-    const std::string extra_report = settings.extra_results ? settings.extra_results(h5_ ? &*h5_ : nullptr, staging_) : "";
+    RunProvenance provenance = run_provenance(campaign_);
+    const std::string extra_report = settings.addition ? settings.addition->write(provenance, h5_ ? &*h5_ : nullptr, staging_) : "";
     // Written whatever the formats: it is what `growthuq report` and a reader of the CSVs cite.
-    const RunProvenance provenance = run_provenance(campaign_);
     write_file_atomically(in_directory(staging_, provenance_json_name), provenance_json(provenance), Overwrite::allow);
     if (h5_) {
       write_provenance(*h5_, provenance);
@@ -360,7 +360,7 @@ CampaignOutcome run_campaign_with_outputs(const PreparedCampaign& campaign, Pool
   const bool resuming = settings.checkpointing == Checkpointing::resume;
   bool created = false;
   std::optional<OutputDirectoryLock> lock;  // the coordinator's, for the whole run
-  std::unique_ptr<RunCheckpoint> checkpoint;
+  std::unique_ptr<RunCheckpoint> checkpoint, addition_checkpoint;
   bool starting_checkpoint = false;
   CampaignOutcome outcome;
   const std::string& directory = campaign.campaign().output_dir;
@@ -374,6 +374,10 @@ CampaignOutcome run_campaign_with_outputs(const PreparedCampaign& campaign, Pool
       checkpoint = RunCheckpoint::start(pool, campaign, settings.manifest);
     }
     if (resuming) checkpoint = RunCheckpoint::resume(pool, campaign);
+    if (settings.addition != nullptr) {
+      if (checkpoint) addition_checkpoint = RunCheckpoint::open_audit(pool, directory, settings.addition->chunk_shape(), resuming);
+      settings.addition->run(pool, addition_checkpoint.get());
+    }
     outcome.run = run_campaign_lines(campaign, pool, observer, checkpoint.get());
     // All processes run the bootstrap while the coordinator's writer may still write the last line.
     DataUncertaintyResult uncertainty = estimate_data_uncertainty(campaign, pool, settings.progress, log);
@@ -384,6 +388,7 @@ CampaignOutcome run_campaign_with_outputs(const PreparedCampaign& campaign, Pool
     if (const int stop = coordinator_stop_request(pool)) throw PoolInterrupted(stop);
     on_coordinator(pool, [&] {
       commit_staged_results(directory);
+      addition_checkpoint.reset();
       if (checkpoint) checkpoint->remove();
       report << report_text;
     });
@@ -396,13 +401,21 @@ CampaignOutcome run_campaign_with_outputs(const PreparedCampaign& campaign, Pool
       throw RunInterrupted(interrupted.reason(), "interrupted; nothing was kept to resume (--no-checkpoint)");
     }
     const std::size_t total = campaign.campaign().samples * campaign.lines().size();
+    // The audit's finite-element samples are counted apart: they are no part of the lines'.
+    std::string audit;
+    if (addition_checkpoint) {
+      const ChunkShape shape = settings.addition->chunk_shape();
+      audit = " (and " + std::to_string(addition_checkpoint->samples_held()) + " of the audit's " +
+              std::to_string(shape.samples * shape.chunk_sizes.size()) + ")";
+    }
     throw RunInterrupted(interrupted.reason(), "interrupted after " + std::to_string(checkpoint->samples_held()) + " of " +
-                                                   std::to_string(total) + " samples; finish with: growthuq run --resume " +
-                                                   shell_word(directory));
+                                                   std::to_string(total) + " samples" + audit +
+                                                   "; finish with: growthuq run --resume " + shell_word(directory));
   } catch (const WriteError& error) {
     // A full disk (or a quota, a read-only remount): the checkpoint's chunks are still good, so
     // they stay, whoever started them, for a resume once there is room.
     observer.abandon(pool.is_coordinator());
+    addition_checkpoint.reset();
     checkpoint.reset();
     lock.reset();
     if (!pool.is_coordinator() || !has_checkpoint(directory)) throw_after_failure(starting_checkpoint, created, directory, pool);
@@ -410,6 +423,7 @@ CampaignOutcome run_campaign_with_outputs(const PreparedCampaign& campaign, Pool
                                                          "with: growthuq run --resume " + shell_word(directory));
   } catch (...) {
     observer.abandon(pool.is_coordinator());
+    addition_checkpoint.reset();
     checkpoint.reset();
     lock.reset();
     throw_after_failure(starting_checkpoint, created, directory, pool);

@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "growthuq/campaign/campaign_run.hpp"
+#include "campaign/checkpoint.hpp"
 #include "campaign/checkpoint_manifest.hpp"
+#include "campaign/provenance.hpp"
 #include "growthuq/campaign/run_campaign.hpp"
 #include "growthuq/evaluation/line_result.hpp"
 #include "growthuq/campaign/progress.hpp"
@@ -29,6 +31,23 @@ enum class Checkpointing {
 
 class ResultsH5Writer;  // growthuq/io/results_h5.hpp
 
+// Work a run does beside its lines (the audit of its fast fidelity, campaign_audit.hpp), kept in
+// the run's checkpoint and committed with the run's results.
+class RunAddition {
+ public:
+  virtual ~RunAddition() = default;
+  // Of its chunks in the checkpoint (checkpoint/audit.bin).
+  virtual ChunkShape chunk_shape() const = 0;
+  // Every process, once the output directory is locked and the checkpoint started or resumed,
+  // before the lines: the chunks `journal` holds are replayed, new ones recorded (null: no
+  // checkpoint). PoolInterrupted when the pool is stopped.
+  virtual void run(Pool& pool, ChunkJournal* journal) = 0;
+  // Coordinator, while the results are staged: adds itself to the provenance, writes its files
+  // into `staging` and results.h5 (null without hdf5); returns the text the report prints after
+  // the summary table.
+  virtual std::string write(RunProvenance& provenance, ResultsH5Writer* h5, const std::string& staging) const = 0;
+};
+
 struct OutputSettings {
   Overwrite overwrite = Overwrite::refuse;  // allow: reuse an existing output directory (--force)
   ProgressMode progress = ProgressMode::none;
@@ -36,10 +55,7 @@ struct OutputSettings {
   std::string command_line;                 // stored in results.h5 (when resuming: the original one)
   Checkpointing checkpointing = Checkpointing::off;
   CheckpointManifest manifest;              // with Checkpointing::start (the coordinator writes it)
-  // Results made beside the run (the audit's, campaign_audit.hpp), written by the coordinator
-  // into the staging folder and results.h5 (null without hdf5) with the run's own and committed
-  // with them; returns the text the report prints after the summary table.
-  std::function<std::string(ResultsH5Writer* h5, const std::string& staging)> extra_results;
+  RunAddition* addition = nullptr;          // the audit, where the campaign asks for one
 };
 
 // The run stopped on a stop request (Pool::stop_when; Ctrl-C or SIGTERM in the CLI), raised on

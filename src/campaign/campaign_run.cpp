@@ -132,8 +132,8 @@ class LineRun {
       evaluated->status.resize(samples_);
     }
     const ChunkWork work = [&](ChunkRange range) { return campaign_.evaluate_chunk(line, design, range); };
-    bool replaying = false;  // chunks from the checkpoint: no work, no part of the rate
-    const ChunkSink sink = [&](ChunkRange range, std::span<const double> values) {
+    // Chunks from the checkpoint are replayed: no work, no part of the rate.
+    const auto fill = [&](ChunkRange range, std::span<const double> values, bool replayed) {
       const ChunkValues chunk(values, outputs);
       const std::size_t size = range.end - range.begin;
       if (chunk.samples() != size) throw std::logic_error("chunk of unexpected size");
@@ -143,7 +143,7 @@ class LineRun {
         for (std::size_t i = 0; i < size; ++i) out[i] = in[i] / to_si[o];
       }
       for (std::size_t i = 0; i < size; ++i) evaluated->status[range.begin + i] = chunk.status(i);
-      if (replaying) {
+      if (replayed) {
         observer_.chunk_replayed(range);
       } else {
         observer_.chunk_done(range);
@@ -156,20 +156,9 @@ class LineRun {
     // one more queued it starts that one meanwhile. No deeper: a queued sample can no longer go
     // to whichever process frees up first, which matters at a line's end.
     pool_.set_queued_chunks(campaign_.has_slow_samples(line) ? 2 : 3);
-    if (journal_ == nullptr) {
-      pool_.run(samples_, chunk_size, work, sink);
-    } else {
-      on_coordinator(pool_, [&] {  // a read error stops every process
-        replaying = true;
-        journal_->replay(index, sink);
-        replaying = false;
-      });
-      const ChunkSink record_then_sink = [&](ChunkRange range, std::span<const double> values) {
-        journal_->record(index, range, values);
-        sink(range, values);
-      };
-      pool_.run(samples_, chunk_size, work, record_then_sink, [&](ChunkRange range) { return journal_->holds(index, range); });
-    }
+    const ChunkSink computed = [&](ChunkRange range, std::span<const double> values) { fill(range, values, false); };
+    const ChunkSink replayed = [&](ChunkRange range, std::span<const double> values) { fill(range, values, true); };
+    run_with_journal(pool_, journal_, index, samples_, chunk_size, work, computed, replayed);
     if (kappa_) scale_growth(line, *evaluated, to_si);
     outcome_.timings.evaluation += seconds_since(start);
     return evaluated;
@@ -314,6 +303,20 @@ LineStatistics line_statistics(const LineResult& result, const std::vector<std::
   }
   statistics.analysis = analyze_line(result);
   return statistics;
+}
+
+void run_with_journal(Pool& pool, ChunkJournal* journal, std::size_t line, std::size_t count, std::size_t chunk_size,
+                      const ChunkWork& work, const ChunkSink& sink, const ChunkSink& replayed) {
+  if (journal == nullptr) {
+    pool.run(count, chunk_size, work, sink);
+    return;
+  }
+  on_coordinator(pool, [&] { journal->replay(line, replayed); });  // a read error stops every process
+  const ChunkSink record_then_sink = [&](ChunkRange range, std::span<const double> values) {
+    journal->record(line, range, values);
+    sink(range, values);
+  };
+  pool.run(count, chunk_size, work, record_then_sink, [&](ChunkRange range) { return journal->holds(line, range); });
 }
 
 RunOutcome run_campaign_lines(const PreparedCampaign& campaign, Pool& pool, RunObserver& observer, ChunkJournal* journal) {

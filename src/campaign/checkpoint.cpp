@@ -4,6 +4,7 @@
 #include <array>
 #include <cstring>
 #include <filesystem>
+#include <utility>
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/io/output_file.hpp"
@@ -67,60 +68,91 @@ std::string read_checkpoint_manifest_text(const std::string& output_dir) {
   return detail::read_text_file(checkpoint_manifest_path(output_dir));
 }
 
-RunCheckpoint::RunCheckpoint(const PreparedCampaign& campaign)
-    : output_dir_(campaign.campaign().output_dir), held_(campaign.lines().size()) {}
+std::string checkpoint_audit_log_path(const std::string& output_dir) {
+  return (fs::path(checkpoint_directory(output_dir)) / "audit.bin").string();
+}
+
+RunCheckpoint::RunCheckpoint(std::string output_dir, std::string log_path, std::size_t lines)
+    : output_dir_(std::move(output_dir)), log_path_(std::move(log_path)), held_(lines) {}
 
 std::unique_ptr<RunCheckpoint> RunCheckpoint::start(Pool& pool, const PreparedCampaign& campaign,
                                                     const CheckpointManifest& manifest) {
-  std::unique_ptr<RunCheckpoint> checkpoint(new RunCheckpoint(campaign));
+  const std::string& output_dir = campaign.campaign().output_dir;
+  std::unique_ptr<RunCheckpoint> checkpoint(
+      new RunCheckpoint(output_dir, checkpoint_chunk_log_path(output_dir), campaign.lines().size()));
   on_coordinator(pool, [&] {
-    const std::string directory = checkpoint_directory(checkpoint->output_dir_);
+    const std::string directory = checkpoint_directory(output_dir);
     std::error_code error;
     fs::remove_all(directory, error);  // a stale checkpoint in a directory reused with --force
     fs::create_directories(directory, error);
     if (error) throw InputError(directory, "cannot create the checkpoint directory: " + error.message());
     // The chunk log first: a manifest is what marks a directory as resumable.
-    checkpoint->writer_.emplace(checkpoint_chunk_log_path(checkpoint->output_dir_), 0);
-    write_file_atomically(checkpoint_manifest_path(checkpoint->output_dir_), format_manifest(manifest), Overwrite::allow);
+    checkpoint->writer_.emplace(checkpoint->log_path_, 0);
+    write_file_atomically(checkpoint_manifest_path(output_dir), format_manifest(manifest), Overwrite::allow);
   });
   return checkpoint;
 }
 
 std::unique_ptr<RunCheckpoint> RunCheckpoint::resume(Pool& pool, const PreparedCampaign& campaign) {
-  std::unique_ptr<RunCheckpoint> checkpoint(new RunCheckpoint(campaign));
+  const std::string& output_dir = campaign.campaign().output_dir;
+  std::unique_ptr<RunCheckpoint> checkpoint(
+      new RunCheckpoint(output_dir, checkpoint_chunk_log_path(output_dir), campaign.lines().size()));
+  ChunkShape shape;
+  shape.samples = campaign.campaign().samples;
+  for (const PreparedLine& line : campaign.lines()) shape.chunk_sizes.push_back(campaign.chunk_size_of(line));
+  shape.values_per_sample = ChunkValues::values_per_sample(campaign.computed_outputs().size());
+  std::string held;
+  on_coordinator(pool, [&] { held = checkpoint->continue_log(shape); });
+  checkpoint->share_held(pool, held);
+  return checkpoint;
+}
+
+std::unique_ptr<RunCheckpoint> RunCheckpoint::open_audit(Pool& pool, const std::string& output_dir, const ChunkShape& shape,
+                                                         bool resuming) {
+  std::unique_ptr<RunCheckpoint> checkpoint(
+      new RunCheckpoint(output_dir, checkpoint_audit_log_path(output_dir), shape.chunk_sizes.size()));
   std::string held;
   on_coordinator(pool, [&] {
-    const std::string path = checkpoint_chunk_log_path(checkpoint->output_dir_);
-    const ChunkLogScan scan = scan_chunk_log(path);
-    const std::size_t n = campaign.campaign().samples;
-    const std::size_t values_per_sample = ChunkValues::values_per_sample(campaign.computed_outputs().size());
-    for (const ChunkRecord& record : scan.records) {
-      const std::size_t size = record.range.end - record.range.begin;
-      const std::size_t chunk_size =
-          record.line < campaign.lines().size() ? campaign.chunk_size_of(campaign.lines()[record.line]) : 1;
-      const bool fits = record.line < checkpoint->held_.size() && record.range.begin % chunk_size == 0 &&
-                        record.range.end == std::min(n, record.range.begin + chunk_size) &&
-                        record.count == values_per_sample * size;
-      if (!fits) {
-        throw InputError(path, "the chunk at byte " + std::to_string(record.offset) + " (line " + std::to_string(record.line) +
-                                   ", samples [" + std::to_string(record.range.begin) + ", " +
-                                   std::to_string(record.range.end) +
-                                   ")) does not fit the campaign of the manifest: the checkpoint is damaged; start "
-                                   "the run again with --force");
-      }
-      std::vector<ChunkRecord>& line = checkpoint->held_[record.line];
-      const auto place = std::lower_bound(line.begin(), line.end(), record, by_begin);
-      if (place != line.end() && place->range.begin == record.range.begin) continue;  // kept twice: the first copy
-      line.insert(place, record);
-      checkpoint->samples_held_ += size;
+    std::error_code error;
+    if (resuming && fs::is_regular_file(checkpoint->log_path_, error)) {
+      held = checkpoint->continue_log(shape);
+    } else {
+      checkpoint->writer_.emplace(checkpoint->log_path_, 0);
     }
-    checkpoint->writer_.emplace(path, scan.intact_bytes);
-    checkpoint->reader_.emplace(path);
-    held = encode_held(checkpoint->held_);
   });
-  held = pool.broadcast(held);
-  if (!pool.is_coordinator()) decode_held(held, checkpoint->held_);
+  checkpoint->share_held(pool, held);
   return checkpoint;
+}
+
+std::string RunCheckpoint::continue_log(const ChunkShape& shape) {
+  const ChunkLogScan scan = scan_chunk_log(log_path_);
+  for (const ChunkRecord& record : scan.records) {
+    const std::size_t size = record.range.end - record.range.begin;
+    const bool known_line = record.line < held_.size();
+    const std::size_t chunk_size = known_line ? shape.chunk_sizes[record.line] : 1;
+    const bool fits = known_line && record.range.begin % chunk_size == 0 &&
+                      record.range.end == std::min(shape.samples, record.range.begin + chunk_size) &&
+                      record.count == shape.values_per_sample * size;
+    if (!fits) {
+      throw InputError(log_path_, "the chunk at byte " + std::to_string(record.offset) + " (line " + std::to_string(record.line) +
+                                      ", samples [" + std::to_string(record.range.begin) + ", " + std::to_string(record.range.end) +
+                                      ")) does not fit the campaign of the manifest: the checkpoint is damaged; start "
+                                      "the run again with --force");
+    }
+    std::vector<ChunkRecord>& line = held_[record.line];
+    const auto place = std::lower_bound(line.begin(), line.end(), record, by_begin);
+    if (place != line.end() && place->range.begin == record.range.begin) continue;  // kept twice: the first copy
+    line.insert(place, record);
+    samples_held_ += size;
+  }
+  writer_.emplace(log_path_, scan.intact_bytes);
+  reader_.emplace(log_path_);
+  return encode_held(held_);
+}
+
+void RunCheckpoint::share_held(Pool& pool, std::string held) {
+  held = pool.broadcast(held);
+  if (!pool.is_coordinator()) decode_held(held, held_);
 }
 
 bool RunCheckpoint::holds(std::size_t line, ChunkRange range) const {

@@ -233,7 +233,21 @@ std::string provenance_json(const RunProvenance& p) {
         << ", \"reference\": " << quoted(model.reference) << ", \"measured_error\": " << quoted(model.measured_error)
         << "}";
   }
-  out << "\n  ]\n}\n";
+  out << "\n  ]";
+  if (p.audit.samples_per_line > 0) {
+    const ProvenanceAudit& audit = p.audit;
+    out << ",\n  \"audit\": {\"samples_per_line\": " << audit.samples_per_line << ", \"high_fidelity\": " << quoted(audit.high_fidelity)
+        << ", \"mesh\": " << quoted(audit.mesh) << ", \"rows\": [";
+    for (std::size_t i = 0; i < audit.rows.size(); ++i) {
+      const ProvenanceAuditRow& row = audit.rows[i];
+      out << (i ? "," : "") << "\n    {\"line\": " << quoted(row.line) << ", \"fidelity\": " << quoted(row.fidelity)
+          << ", \"quantity\": " << quoted(row.quantity) << ", \"unit\": " << quoted(row.unit) << ", \"pairs\": " << row.pairs
+          << ", \"bias\": " << number(row.bias) << ", \"bias_ci_low\": " << number(row.bias_ci_low)
+          << ", \"bias_ci_high\": " << number(row.bias_ci_high) << "}";
+    }
+    out << "\n  ]}";
+  }
+  out << "\n}\n";
   return out.str();
 }
 
@@ -265,6 +279,20 @@ void write_provenance(ResultsH5Writer& h5, const RunProvenance& p) {
     h5.write_attribute(path, "description", model.description);
     h5.write_attribute(path, "reference", model.reference);
     h5.write_attribute(path, "measured_error", model.measured_error);
+  }
+  if (p.audit.samples_per_line == 0) return;
+  const std::string audit = group + "/audit";
+  h5.write_attribute(audit, "samples_per_line", p.audit.samples_per_line);
+  h5.write_attribute(audit, "high_fidelity", p.audit.high_fidelity);
+  h5.write_attribute(audit, "mesh", p.audit.mesh);
+  for (const ProvenanceAuditRow& row : p.audit.rows) {
+    const std::string path = audit + "/" + row.line + "/" + row.quantity;
+    h5.write_attribute(path, "fidelity", row.fidelity);
+    h5.write_attribute(path, "unit", row.unit);
+    h5.write_attribute(path, "pairs", row.pairs);
+    h5.write_attribute(path, "bias", row.bias);
+    h5.write_attribute(path, "bias_ci_low", row.bias_ci_low);
+    h5.write_attribute(path, "bias_ci_high", row.bias_ci_high);
   }
 }
 

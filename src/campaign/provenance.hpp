@@ -34,6 +34,21 @@ struct ProvenanceModel {
   std::string name, description, reference, measured_error;
 };
 
+// The audit of the campaign's fast fidelity (campaign_audit.hpp), when one ran: per audited line
+// and output, the bias measured in this run (mean of high - fast over the pairs) with its 95 %
+// interval.
+struct ProvenanceAuditRow {
+  std::string line, fidelity, quantity, unit;  // fidelity: the line's fast one; unit: of the bias
+  std::uint64_t pairs = 0;                     // samples both fidelities gave a value for
+  double bias = 0, bias_ci_low = 0, bias_ci_high = 0;  // NaN (JSON null) with fewer than 3 pairs
+};
+
+struct ProvenanceAudit {
+  std::uint64_t samples_per_line = 0;  // 0: no audit ran
+  std::string high_fidelity, mesh;     // shell_fe and its [shell_fe] mesh
+  std::vector<ProvenanceAuditRow> rows;
+};
+
 struct RunProvenance {
   std::string engine_version, campaign_name, campaign_path, campaign_sha256;
   std::uint64_t seed = 0;
@@ -45,16 +60,19 @@ struct RunProvenance {
   std::uint64_t data_interval_samples = 0;     // samples per line and replicate (0 without)
   std::vector<ProvenanceLine> lines;           // the campaign's order
   std::vector<ProvenanceModel> models;         // sampling first, then the evaluators in run order
+  ProvenanceAudit audit;                       // filled in by the audit itself (campaign_audit.cpp)
 };
 
 RunProvenance run_provenance(const PreparedCampaign& campaign);
 
 // provenance.json: one object, keys in a fixed order, two-space indentation, numbers that read
-// back to the same double.
+// back to the same double; the key "audit" only when an audit ran.
 std::string provenance_json(const RunProvenance& provenance);
 
 // /provenance: scalar attributes on the group; /provenance/lines/<line> and
-// /provenance/models/<model> groups with their fields as string attributes.
+// /provenance/models/<model> groups with their fields as string attributes; when an audit ran,
+// /provenance/audit (samples_per_line, high_fidelity, mesh) and /provenance/audit/<line>/<quantity>
+// (fidelity, unit, pairs, bias, bias_ci_low, bias_ci_high).
 void write_provenance(ResultsH5Writer& h5, const RunProvenance& provenance);
 
 }  // namespace growthuq

@@ -1,10 +1,12 @@
 #include "growthuq/campaign/run_campaign.hpp"
 
 #include <chrono>
+#include <memory>
 #include <cstdio>
 #include <optional>
 #include <utility>
 
+#include "campaign/audit_addition.hpp"
 #include "campaign/campaign_outputs.hpp"
 #include "growthuq/campaign/campaign_audit.hpp"
 #include "campaign/checkpoint.hpp"
@@ -82,9 +84,8 @@ void check_before_running(const PreparedCampaign& prepared, Pool& pool, const Ou
   });
 }
 
-// The run, after the audit of its fast fidelity where the campaign asks for one ([audit],
-// campaign_audit.hpp): the audit's results are committed with the run's, so an interrupted
-// audit writes nothing.
+// The run, with the audit of its fast fidelity where the campaign asks for one ([audit],
+// audit_addition.hpp): checkpointed and committed with the run's results.
 RunSummary run_prepared(const PreparedCampaign& prepared, const CampaignAudit* audit, Pool& pool, OutputSettings settings,
                         const RunOptions& options, Streams& streams, bool resuming) {
   const auto start = std::chrono::steady_clock::now();
@@ -101,10 +102,12 @@ RunSummary run_prepared(const PreparedCampaign& prepared, const CampaignAudit* a
     handlers.emplace();
     pool.stop_when([] { return interrupt_signal(); });
   }
+  std::unique_ptr<RunAddition> addition;
+  if (audit != nullptr) {
+    addition = audit_addition(*audit, settings.progress, streams.log());
+    settings.addition = addition.get();
+  }
   try {
-    if (audit != nullptr) {
-      settings.extra_results = audit_results(run_audit(*audit, pool, settings.progress, streams.log()), prepared.campaign());
-    }
     CampaignOutcome outcome = run_campaign_with_outputs(prepared, pool, settings, streams.report(), streams.log());
     summary.completed = true;
     summary.kappa = outcome.run.kappa;
@@ -177,7 +180,7 @@ RunSummary resume_campaign(const std::string& output_dir, Pool& pool, const RunO
   settings.command_line = manifest.command_line;  // results.h5 as the uninterrupted run writes it
   settings.checkpointing = Checkpointing::resume;
   const PreparedCampaign prepared(resumed_campaign(manifest, output_dir), pool, settings.progress, streams.log());
-  // The audit is not checkpointed: a resumed run audits again.
+  // The audit's finished samples are in the checkpoint: a resumed run replays them.
   std::optional<CampaignAudit> audit;
   if (prepared.campaign().audit.samples > 0) audit.emplace(prepared, pool);
   check_before_running(prepared, pool, settings, {manifest_path, "samples"}, true, options.caller, streams.log());

@@ -1,6 +1,6 @@
 # Runs a test campaign once without MPI and once under `mpirun -np PROCESSES`, and requires
 # samples.csv, summary.csv, sensitivity.csv, provenance.json and (for raw-data lines with a bootstrap) data_uncertainty.csv and
-# the line comparisons' comparisons.csv and letters.csv to be
+# the line comparisons' comparisons.csv and letters.csv, and an audit's audit.csv, to be
 # identical byte for byte, and results.h5 value for value (its analyses and raw-data fits are
 # computed by all processes together; the command line stored in it names another --out, so its
 # bytes differ), when /usr/bin/python3 has h5py: results must not depend on the number of
@@ -25,7 +25,7 @@ if(NOT mpi_result EQUAL 0)
   message(FATAL_ERROR "run under mpirun -np ${PROCESSES} failed (${mpi_result}): ${mpi_error}")
 endif()
 set(compared samples.csv summary.csv sensitivity.csv provenance.json)
-foreach(optional data_uncertainty.csv comparisons.csv letters.csv)
+foreach(optional data_uncertainty.csv comparisons.csv letters.csv audit.csv)
   if(EXISTS "${WORK}/serial/${optional}")
     list(APPEND compared ${optional})
   endif()

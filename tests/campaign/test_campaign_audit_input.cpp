@@ -36,6 +36,8 @@ TEST_CASE("campaign audit: check states its samples and time; bad counts and a s
   REQUIRE_MESSAGE(plan.exit_code == 0, plan.err);
   CHECK(plan.out.find("audit: the first 4 samples of 1 line(s) through shell_fe too (mesh coarse): 4 finite-element samples") !=
         std::string::npos);
+  // A closed-form campaign's time is the audit's alone.
+  CHECK(plan.out.find("time: fidelity shell_fe, 4 finite-element samples x about") != std::string::npos);
   CHECK(plan.out.find("4 of the samples are the audit's") != std::string::npos);
   CHECK(plan.out.find(", audit.csv") != std::string::npos);
   CHECK_FALSE(fs::exists(scratch.root / "audit_out"));

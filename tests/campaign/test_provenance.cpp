@@ -100,3 +100,21 @@ TEST_CASE("provenance.json escapes text and writes an ideal sensor as null") {
   CHECK(json.find(R"("sensor_stiffness_N_per_m": null)") != std::string::npos);
   CHECK(json.find(R"("probe_radius_um": 0.25)") != std::string::npos);
 }
+
+TEST_CASE("provenance.json holds an audit's measured bias only when one ran, null where none was estimated") {
+  RunProvenance provenance;
+  CHECK(provenance_json(provenance).find("\"audit\"") == std::string::npos);
+  provenance.audit.samples_per_line = 20;
+  provenance.audit.high_fidelity = "shell_fe";
+  provenance.audit.mesh = "coarse";
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  provenance.audit.rows = {{"wild_type", "closed_form", "p", "MPa", 19, 0.359, 0.295, 0.423},
+                           {"pme48", "corrected", "E", "MPa", 2, none, none, none}};
+  const std::string json = provenance_json(provenance);
+  CHECK(json.find(R"("audit": {"samples_per_line": 20, "high_fidelity": "shell_fe", "mesh": "coarse", "rows": [)") !=
+        std::string::npos);
+  CHECK(json.find(R"({"line": "wild_type", "fidelity": "closed_form", "quantity": "p", "unit": "MPa", "pairs": 19, )"
+                  R"("bias": 0.359, "bias_ci_low": 0.295, "bias_ci_high": 0.423})") != std::string::npos);
+  CHECK(json.find(R"("pairs": 2, "bias": null, "bias_ci_low": null, "bias_ci_high": null})") != std::string::npos);
+  CHECK(json.substr(json.size() - 5) == "]}\n}\n");  // the last key, and the object closed
+}

@@ -85,9 +85,29 @@ def methods_paragraph(provenance, written):
     return " ".join(text)
 
 
+def _audit_warnings(audit):
+    """Per audited line, the bias this run measured of its fast fidelity ([audit]): the figure
+    for these tubes, beside the documented one above."""
+    if not audit:
+        return []
+    found = []
+    rows = {}
+    for row in audit["rows"]:
+        rows.setdefault((row["line"], row["fidelity"]), []).append(row)
+    for (line, fidelity), measured in rows.items():
+        biases = "; ".join(
+            f"{row['quantity']} {significant(row['bias'])} {row['unit']} "
+            f"(95 % interval {significant(row['bias_ci_low'])} to {significant(row['bias_ci_high'])}, {row['pairs']} pairs)"
+            for row in measured)
+        found.append(f"{line}: {fidelity} measured against {audit['high_fidelity']} (mesh {audit['mesh']}) in this run, "
+                     f"on its first {audit['samples_per_line']} samples: bias ({audit['high_fidelity']} minus "
+                     f"{fidelity}) {biases} (audit.csv).")
+    return found
+
+
 def warnings(provenance, summary):
-    """Lines of text a reader must not miss: each fidelity's measured error, flagged samples, a
-    run without provenance."""
+    """Lines of text a reader must not miss: each fidelity's measured error (and the bias an audit
+    measured in this run), flagged samples, a run without provenance."""
     found = []
     if provenance is None:
         found.append("This run has no provenance.json (a growthuq older than the report, or a results directory "
@@ -100,6 +120,7 @@ def warnings(provenance, summary):
         if error and error not in seen:
             seen.add(error)
             found.append(f"Measured error of {model['name']}: {error}.")
+    found.extend(_audit_warnings(provenance.get("audit")))
     for line in provenance.get("lines", []):
         if line.get("illustrative"):
             found.append(f"{line['name']}: the laws of {', '.join(line['illustrative'])} are illustrative (they fill "

@@ -1,12 +1,13 @@
-// The audit of a campaign's fast fidelity ([audit] samples = N, campaigns/README.md "Audit"): before
-// the run, the first N samples of each line on closed_form or corrected also run through shell_fe (the
-// campaign's [shell_fe] options); per line and output, the fast fidelity's bias (mean of
-// shell_fe - fast) and the multifidelity estimates of the finite elements' mean and median
-// (stats/multifidelity.hpp) from the N pairs and the fast fidelity's M samples.
+// The audit of a campaign's fast fidelity ([audit] samples = N, campaigns/README.md "Audit"):
+// before the run's lines, the first N samples of each line on closed_form or corrected also run
+// through shell_fe (the campaign's [shell_fe] options), kept in the run's checkpoint and
+// committed with its results (src/campaign/audit_addition.hpp); per line and output, the fast
+// fidelity's bias (mean of shell_fe - fast) and the multifidelity estimates of the finite
+// elements' mean and median (stats/multifidelity.hpp) from the N pairs and the fast fidelity's
+// M samples.
 #pragma once
 
 #include <cstddef>
-#include <functional>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -14,9 +15,8 @@
 #include <vector>
 
 #include "growthuq/campaign/campaign_file.hpp"
+#include "growthuq/campaign/campaign_run.hpp"
 #include "growthuq/campaign/prepared_campaign.hpp"
-#include "growthuq/campaign/progress_mode.hpp"
-#include "growthuq/io/results_h5.hpp"
 #include "growthuq/pool/pool.hpp"
 #include "growthuq/stats/multifidelity.hpp"
 
@@ -55,10 +55,15 @@ class CampaignAudit {
   CampaignAudit& operator=(const CampaignAudit&) = delete;
 
   // All processes; the rows on the coordinator (empty elsewhere). The finite-element samples go
-  // through `pool` one at a time ([shell_fe] chunk_size); a line's start is said on `log`, when
-  // given. PoolInterrupted when the pool is stopped.
-  std::vector<AuditRow> run(Pool& pool, std::ostream* log) const;
+  // through `pool` in [shell_fe] chunk_size chunks; with a `journal` (the checkpoint's; its
+  // lines are the audited lines' positions in audited_lines()), the chunks it holds are
+  // replayed and the others recorded, so a resumed audit redoes no finished sample and gives
+  // the uninterrupted one's rows bit for bit. A line's start is said on `log`, when given.
+  // PoolInterrupted when the pool is stopped.
+  std::vector<AuditRow> run(Pool& pool, std::ostream* log, ChunkJournal* journal = nullptr) const;
   const PreparedCampaign& campaign() const noexcept { return campaign_; }
+  // The outputs each finite-element sample computes (the values of a journal's chunks).
+  const std::vector<std::string>& computed_outputs() const;
 
  private:
   const PreparedCampaign& campaign_;
@@ -74,14 +79,5 @@ std::string audit_table(const std::vector<AuditRow>& rows, const Campaign& campa
 // audit.csv: one row per line and output, every estimate with its standard error and 95 %
 // interval (columns in campaigns/README.md "Audit"); the same table as /audit in results.h5.
 std::string audit_csv(const std::vector<AuditRow>& rows);
-
-// The audit, run before the campaign (all processes call it): its rows on the coordinator. A
-// line's start on `log` unless `progress` is none. RunInterrupted when the pool is stopped:
-// nothing is written then.
-std::vector<AuditRow> run_audit(const CampaignAudit& audit, Pool& pool, ProgressMode progress, std::ostream& log);
-
-// What the run writes of the audit with its own results (OutputSettings::extra_results):
-// audit.csv into the staging folder, /audit into results.h5, and the table for the report.
-std::function<std::string(ResultsH5Writer*, const std::string&)> audit_results(std::vector<AuditRow> rows, const Campaign& campaign);
 
 }  // namespace growthuq

@@ -90,6 +90,13 @@ class ChunkJournal {
   virtual void record(std::size_t line, ChunkRange range, std::span<const double> values) = 0;
 };
 
+// Pool::run over the `count` samples of the journal's `line` (every process calls it): the
+// chunks `journal` holds are fed to `replayed` on the coordinator first (a read error raised on
+// every process), the others evaluated by `work`, recorded and fed to `sink`. Without a journal,
+// Pool::run itself.
+void run_with_journal(Pool& pool, ChunkJournal* journal, std::size_t line, std::size_t count, std::size_t chunk_size,
+                      const ChunkWork& work, const ChunkSink& sink, const ChunkSink& replayed);
+
 struct RunOutcome {
   double kappa = 1.0;       // the calibrated kappa on the coordinator; 1 elsewhere and without v
   bool calibrated = false;  // v was an output and kappa was calibrated on the reference line
