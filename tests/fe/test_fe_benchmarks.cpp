@@ -11,7 +11,7 @@
 //
 // The mesh: 48 x 48 cells, graded in the hoop direction towards the straight edges and the
 // crown and in the axial direction towards both ends (hoop_grading and axial_grading 0.6,
-// semicylinder_benchmark.hpp says why). Measured (2026-12-02), deflection at P/Pmax = 0.05 and
+// semicylinder_benchmark.hpp says why). Measured deflection at P/Pmax = 0.05 and
 // 1 against the reference 0.05421 and 1.71505:
 //   48 x 48 uniform                 -        2.219 (+29 %: a jump to a deeper branch at 0.85-0.9)
 //   hoop graded only:  24 x 24      0.0644   1.918 (+11.8 %)

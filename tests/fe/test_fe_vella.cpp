@@ -19,10 +19,10 @@
 //
 // Mesh. The sphere mesh (mesh.cpp) is regular where the probe presses: the pole is the middle of
 // an octahedron edge and red refinement keeps valence 6 there. On the "4-8" meshes of longest-edge
-// bisection, which the mesh used until 2026-12-02, the bending element had a checkerboard mode and
-// this test measured -16 % (tau = 0) to -5 % (tau = 10).
+// bisection the bending element has a checkerboard mode, and this test measured -16 % (tau = 0)
+// to -5 % (tau = 10) on them.
 //
-// Measured (2026-12-02, finest = 0.2 of the smallest length): k_FE / k_ref - 1 = -1.4 % at
+// Measured (finest = 0.2 of the smallest length): k_FE / k_ref - 1 = -1.4 % at
 // tau = 0 and 0.5, within 3 % at every tau; at tau = 0, -0.9 % with the finest size halved.
 #include <doctest/doctest.h>
 

@@ -1,5 +1,5 @@
-// ShellFeOptions: the defaults the issue names, and one InputError naming key, value and range
-// for each bad option.
+// ShellFeOptions: the defaults src/fe/README.md states, and one InputError naming key, value and
+// range for each bad option.
 #include <doctest/doctest.h>
 
 #include <limits>

@@ -3,18 +3,18 @@
 # CI runs every enabled one).
 #
 # Every validation here passes; a test that did not would be registered DISABLED (so that
-# `ctest` lists it as "Not Run (Disabled)" instead of hiding it), its tolerance the issue's, never
+# `ctest` lists it as "Not Run (Disabled)" instead of hiding it), its tolerance kept, never
 # loosened. Run one alone with `build/release/tests/fe/<binary>` (see the COMMAND of each).
 growthuq_add_test(test_fe_references test_fe_vella_reference.cpp test_fe_validation_support.cpp)
 
-# Within 1.4 % of Vella et al. 2012 at every tau (it was 16 % soft on the 4-8 meshes of
-# longest-edge bisection, before 2026-12-02: mesh_quality.hpp).
+# Within 1.4 % of Vella et al. 2012 at every tau (16 % soft on the 4-8 meshes of longest-edge
+# bisection: mesh_quality.hpp).
 growthuq_add_test(test_fe_vella test_fe_vella.cpp)
 set_tests_properties(test_fe_vella PROPERTIES LABELS fe_validation)
 growthuq_test_timeout(test_fe_vella 600)
 
 # Sze et al. 2004's semi-cylinder: every tabulated deflection within 2 % (largest +1.84 %)
-# (measured 2026-12-02 on 48 x 48 cells graded towards the straight edges and the ends; the uniform mesh
+# (on 48 x 48 cells graded towards the straight edges and the ends; the uniform mesh
 # jumped to a deeper branch at 0.85 Pmax, +29 %).
 growthuq_add_test(test_fe_benchmarks test_fe_benchmarks.cpp)
 set_tests_properties(test_fe_benchmarks PROPERTIES LABELS fe_validation)
@@ -31,7 +31,7 @@ growthuq_configure_target(test_fe_balance)
 add_test(NAME test_fe_balance COMMAND test_fe_balance "--test-case-exclude=*half model*")
 set_tests_properties(test_fe_balance PROPERTIES LABELS fe_validation)
 growthuq_test_timeout(test_fe_balance 900)
-# Half and full model within 0.2 % (measured 2026-12-02, coarse mesh; the full model is held on
+# Half and full model within 0.2 % (coarse mesh; the full model is held on
 # its symmetric branch, forward.cpp).
 add_test(NAME test_fe_half_vs_full COMMAND test_fe_balance "--test-case=*half model*")
 set_tests_properties(test_fe_half_vs_full PROPERTIES LABELS fe_validation)

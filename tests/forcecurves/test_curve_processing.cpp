@@ -93,7 +93,7 @@ TEST_CASE("an offset-only baseline (the group's script) leaves the drift in the 
   CHECK(std::abs(tilted.stiffness - truth.stiffness) <= 4.0 * tilted.uncertainty_statistical);
 }
 
-// Coverage over seeds (the issue's "done when"): with Gaussian noise the slope's and the
+// Coverage over seeds: with Gaussian noise the slope's and the
 // baseline tilt's standard errors are exact for least squares, so k_true lies within
 // +-1.96 u_statistical in 95 % of curves; 1000 curves give a binomial sd of 0.7 %, and the
 // accepted band [0.93, 0.97] is about 3 sd wide each way. The total uncertainty adds the

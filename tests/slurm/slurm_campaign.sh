@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # A campaign on a real single-node Slurm (issue 14), started by this script and stopped on any
 # exit: its own munge key and socket, slurm.conf, state and spool folders in a scratch folder,
-# munged, slurmctld and slurmd on this machine (2 CPUs), nothing of the machine's own Slurm or
-# munge touched. Two batch jobs run the small test campaign on 2 processes, as the README's
+# munged, slurmctld and slurmd on localhost, nothing of the machine's own Slurm or munge
+# touched. Two batch jobs run the small test campaign on 2 processes, as campaigns/README.md's
 # sbatch example does: `mpirun --oversubscribe -np 2` inside the allocation, and
 # `srun -n 2 --mpi=pmix` (Debian's Open MPI joins a Slurm step through PMIx only: it has no PMI2
 # component). A third job runs the campaign under `srun --mpi=none`, which Open MPI cannot join:
@@ -109,7 +109,7 @@ echo "Slurm is up: node $host, $(sinfo -h -o '%C') CPUs (allocated/idle/other/to
 # The serial reference.
 "$cli" run "$campaign" --quiet --formats csv,hdf5 --out "$work/serial" >"$work/serial.out"
 
-# One batch job per way of starting the processes, written as the README's sbatch example.
+# One batch job per way of starting the processes, written as campaigns/README.md's sbatch example.
 submit() {
   local name=$1 launch=$2
   cat >"$work/jobs/$name.sbatch" <<EOF

@@ -1,5 +1,5 @@
 // Benchmark (not a test): what each pass over memory that a correlated Latin hypercube design
-// cannot do without costs on this machine, with the engine's own implementation of it, so the
+// cannot do without costs on the machine it runs on, with the engine's own implementation of it, so the
 // design's time (tools/bench/bench_sampling.cpp) can be read against the sum of its parts. A design of m
 // variables with Iman-Conover needs, at least:
 //   m random permutations (LHS strata; for m - 1 of them the van der Waerden scores are

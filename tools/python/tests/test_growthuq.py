@@ -344,8 +344,8 @@ class RunAndLoad(unittest.TestCase):
             self.assertIn(words, help_text)
 
     def test_the_readme_figure(self):
-        """The Python example of the top-level README, run as written on these results."""
-        readme = (REPOSITORY / "README.md").read_text()
+        """The Python example of the package's README, run as written on these results."""
+        readme = (REPOSITORY / "tools" / "python" / "README.md").read_text()
         code = readme.split("<!-- python-figure", 1)[1].split("```python\n", 1)[1].split("```", 1)[0]
         self.assertIn('growthuq.load("results/quick")', code)
         code = code.replace('"results/quick"', repr(str(self.out)))
@@ -353,7 +353,7 @@ class RunAndLoad(unittest.TestCase):
         os.chdir(self.work)
         try:
             namespace = {}
-            exec(compile(code, "README.md", "exec"), namespace)  # noqa: S102 - the README's own example
+            exec(compile(code, "tools/python/README.md", "exec"), namespace)  # noqa: S102 - the README's own example
         finally:
             os.chdir(here)
         self.assertEqual((self.work / "turgor.png").read_bytes()[:8], b"\x89PNG\r\n\x1a\n")
