@@ -234,8 +234,13 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
     result.status = SampleStatus::contact_lost;
     result.message = "the probe lost contact with the wall at depth " + std::to_string(result.depth.back());
   } else if (indented.status != SampleStatus::ok) {
-    result.status = indented.status;
-    result.message = "indentation: " + indented.message;
+    // Where the steps stalled says why: a wall wrapped round the probe is the physical state,
+    // Newton's failure only its symptom.
+    const bool engulfed = result.contact_radius.back() >= engulfed_contact_fraction * rho;
+    result.status = engulfed ? SampleStatus::probe_engulfed : indented.status;
+    result.message = "indentation stopped at depth " + std::to_string(result.depth.back()) + " d0, contact radius " +
+                     std::to_string(result.contact_radius.back() / rho) + " rho" +
+                     (engulfed ? ": the wall wraps the probe" : "") + " (" + indented.message + ")";
   }
   return result;
 }

@@ -44,6 +44,12 @@ struct ForwardProblem {            // all dimensionless
 // substrate still leave half a diameter between them (src/fe/README.md, "Deep curves").
 inline constexpr double deepest_automatic_depth = 0.6;
 
+// A curve whose load steps stall with its contact radius at or beyond this fraction of the probe
+// radius ends probe_engulfed rather than not_converged: the wall has wrapped the probe down to
+// its equator, where the stalls of the soft, thin walls under small probes happen (src/fe/README.md,
+// "Statuses and deep curves", has the measurements the fraction comes from).
+inline constexpr double engulfed_contact_fraction = 0.95;
+
 struct ForwardResult {
   SampleStatus status = SampleStatus::ok;
   std::string message;             // why, when status != ok
