@@ -21,6 +21,7 @@ std::string_view to_string(SampleStatus status) {
     case SampleStatus::no_inflation_state: return "no_inflation_state";
     case SampleStatus::no_modulus_root: return "no_modulus_root";
     case SampleStatus::outside_correction: return "outside_correction";
+    case SampleStatus::probe_engulfed: return "probe_engulfed";
   }
   return "unknown";
 }
@@ -44,6 +45,9 @@ std::string_view describe(SampleStatus status) {
     case SampleStatus::no_inflation_state: return "finite-element model: no pressure gives the measured turgid diameter and thickness";
     case SampleStatus::no_modulus_root: return "finite-element model: no modulus gives the measured k over the force window";
     case SampleStatus::outside_correction: return "fidelity corrected: the tube lies outside the region the correction was fitted on";
+    case SampleStatus::probe_engulfed:
+      return "finite-element model: the load steps stall with the wall wrapped round the probe to its equator "
+             "(contact radius >= 0.95 rho), before the force window's top";
   }
   return "unknown status";
 }

@@ -31,7 +31,7 @@ EquilibriumResult solve_equilibrium(ShellObjective& objective, NewtonSolver& sol
   std::string last_failure = "no step tried";
   for (int attempt = 0; t < 1.0; ++attempt) {
     if (attempt >= options.max_attempts) {
-      result.status = FeStatus::not_converged;
+      result.status = SampleStatus::not_converged;
       result.message = "load stepping stopped after " + std::to_string(attempt) + " attempts at t = " +
                        std::to_string(t) + " (" + last_failure + ")";
       return result;
@@ -63,7 +63,7 @@ EquilibriumResult solve_equilibrium(ShellObjective& objective, NewtonSolver& sol
       ++result.cuts;
       dt = step / 2;
       if (dt < options.min_step) {
-        result.status = FeStatus::not_converged;
+        result.status = SampleStatus::not_converged;
         result.message = "load step below " + std::to_string(options.min_step) + " at t = " +
                          std::to_string(t) + " (" + last_failure + ")";
         return result;

@@ -12,7 +12,7 @@
 
 #include "fe/newton.hpp"
 #include "fe/shell_objective.hpp"
-#include "fe/status.hpp"
+#include "growthuq/evaluation/sample_status.hpp"
 
 namespace growthuq::fe {
 
@@ -26,7 +26,7 @@ struct LoadSteppingOptions {
 };
 
 struct EquilibriumResult {
-  FeStatus status = FeStatus::ok;
+  SampleStatus status = SampleStatus::ok;
   std::string message;
   double reached = 0.0;  // last converged load parameter
   int steps = 0, cuts = 0, newton_iterations = 0, penalty_raises = 0;

@@ -68,8 +68,8 @@ double brent_root(gsl_function& f, double low, double high) {
 
 }  // namespace
 
-FarFieldLaw far_field_law(MaterialLaw law) {
-  return law == MaterialLaw::saint_venant_kirchhoff ? FarFieldLaw::saint_venant_kirchhoff : FarFieldLaw::hencky;
+FarFieldLaw far_field_law(ShellFeLaw law) {
+  return law == ShellFeLaw::saint_venant_kirchhoff ? FarFieldLaw::saint_venant_kirchhoff : FarFieldLaw::hencky;
 }
 
 FarFieldState far_field_state(FarFieldLaw law, double hoop_stretch, double nu) {

@@ -27,7 +27,7 @@
 namespace growthuq::fe {
 
 enum class FarFieldLaw { saint_venant_kirchhoff, hencky, cauchy_log };
-FarFieldLaw far_field_law(MaterialLaw law);
+FarFieldLaw far_field_law(ShellFeLaw law);
 
 struct FarFieldInflation {
   double hoop_stretch, axial_stretch, thickness_stretch;

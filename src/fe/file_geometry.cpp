@@ -10,12 +10,12 @@ class FileGeometry final : public WallGeometry {
  public:
   using WallGeometry::WallGeometry;
 
-  std::optional<std::string> check(FeStatus& status) const override {
+  std::optional<std::string> check(SampleStatus& status) const override {
     if (problem_.mesh_file.empty()) {
-      status = FeStatus::invalid_input;
+      status = SampleStatus::invalid_input;
       return "mesh file: expected a path";
     }
-    status = FeStatus::ok;
+    status = SampleStatus::ok;
     return std::nullopt;
   }
 

@@ -20,8 +20,8 @@ bool finite_all(std::initializer_list<double> values) {
 }
 
 // An empty string when the problem is admissible, else what is wrong (one line).
-std::string check(const ForwardProblem& p, const WallGeometry& geometry, FeStatus& status) {
-  status = FeStatus::invalid_input;
+std::string check(const ForwardProblem& p, const WallGeometry& geometry, SampleStatus& status) {
+  status = SampleStatus::invalid_input;
   if (!finite_all({p.pressure, p.thickness, p.poisson, p.probe_radius, p.max_depth})) {
     return "non-finite input";
   }
@@ -84,7 +84,7 @@ void add_timing(const NewtonSolver& solver, const ShellObjective& objective, For
 
 ForwardResult run(const ForwardProblem& p, bool indent) {
   ForwardResult result;
-  FeStatus status = FeStatus::ok;
+  SampleStatus status = SampleStatus::ok;
   const std::unique_ptr<WallGeometry> geometry = make_wall_geometry(p);
   if (std::string why = check(p, *geometry, status); !why.empty()) {
     result.status = status;
@@ -119,7 +119,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
       assembly.emplace(std::move(problem));
     } catch (const InputError& e) {
       if (geometry->mesh_from_user()) throw;  // an unreadable mesh file is the user's to fix
-      result.status = FeStatus::invalid_input;
+      result.status = SampleStatus::invalid_input;
       result.message = e.what();
       return result;
     }
@@ -142,11 +142,11 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
     const EquilibriumResult inflated = solve_equilibrium(
         *objective, *solver, x, [&](double t, ShellLoads& loads) { loads.pressure = t * p.pressure; }, inflation);
     result.newton_iterations += inflated.newton_iterations;
-    if (inflated.status != FeStatus::ok) {
+    if (inflated.status != SampleStatus::ok) {
       add_timing(*solver, *objective, result);
       // No equilibrium beyond the pressure maximum of the wall: the load steps shrink to nothing
       // while the diameter runs away.
-      result.status = inflated.reached > 0.5 ? FeStatus::burst : inflated.status;
+      result.status = inflated.reached > 0.5 ? SampleStatus::burst : inflated.status;
       result.message = "inflation: " + inflated.message;
       return result;
     }
@@ -172,7 +172,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
     if (lateral2 < rho * rho) touch = std::max(touch, x(0, v) + std::sqrt(rho * rho - lateral2));
   }
   if (!std::isfinite(touch)) {
-    result.status = FeStatus::probe_beyond_mesh;
+    result.status = SampleStatus::probe_beyond_mesh;
     result.message = "no node of the wall under the probe";
     add_timing(*solver, *objective, result);
     return result;
@@ -231,11 +231,16 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   add_timing(*solver, *objective, result);
   fill_fields(setup, *assembly, x, result);
   if (lost) {
-    result.status = FeStatus::contact_lost;
+    result.status = SampleStatus::contact_lost;
     result.message = "the probe lost contact with the wall at depth " + std::to_string(result.depth.back());
-  } else if (indented.status != FeStatus::ok) {
-    result.status = indented.status;
-    result.message = "indentation: " + indented.message;
+  } else if (indented.status != SampleStatus::ok) {
+    // Where the steps stalled says why: a wall wrapped round the probe is the physical state,
+    // Newton's failure only its symptom.
+    const bool engulfed = result.contact_radius.back() >= engulfed_contact_fraction * rho;
+    result.status = engulfed ? SampleStatus::probe_engulfed : indented.status;
+    result.message = "indentation stopped at depth " + std::to_string(result.depth.back()) + " d0, contact radius " +
+                     std::to_string(result.contact_radius.back() / rho) + " rho" +
+                     (engulfed ? ": the wall wraps the probe" : "") + " (" + indented.message + ")";
   }
   return result;
 }

@@ -14,17 +14,17 @@
 #include "fe/membrane.hpp"
 #include "fe/mesh.hpp"
 #include "fe/shell_objective.hpp"
-#include "fe/status.hpp"
+#include "growthuq/evaluation/sample_status.hpp"
 
 namespace growthuq::fe {
 
 struct ForwardProblem {            // all dimensionless
-  Geometry geometry = Geometry::tube;
-  std::string mesh_file;           // Geometry::file only (closed triangulated surface)
+  ShellFeGeometry geometry = ShellFeGeometry::tube;
+  std::string mesh_file;           // ShellFeGeometry::file only (closed triangulated surface)
   double pressure = 0.0;           // p/E
   double thickness = 0.0;          // h0/d0
   double poisson = 0.2;
-  MaterialLaw law = MaterialLaw::hencky;
+  ShellFeLaw law = ShellFeLaw::hencky;
   double probe_radius = 0.0;       // rho/d0
   double tube_length = 0.0;        // L/d0 (tube only)
   double probe_distance = 0.0;     // a/d0 behind the apex (tube only)
@@ -34,7 +34,7 @@ struct ForwardProblem {            // all dimensionless
   bool substrate = true;
   bool bending = true;
   bool half_model = true;
-  MeshLevel mesh = MeshLevel::standard;
+  ShellFeMesh mesh = ShellFeMesh::standard;
   ContactMethod contact = ContactMethod::active_set;
 };
 
@@ -44,8 +44,14 @@ struct ForwardProblem {            // all dimensionless
 // substrate still leave half a diameter between them (src/fe/README.md, "Deep curves").
 inline constexpr double deepest_automatic_depth = 0.6;
 
+// A curve whose load steps stall with its contact radius at or beyond this fraction of the probe
+// radius ends probe_engulfed rather than not_converged: the wall has wrapped the probe down to
+// its equator, where the stalls of the soft, thin walls under small probes happen (src/fe/README.md,
+// "Statuses and deep curves", has the measurements the fraction comes from).
+inline constexpr double engulfed_contact_fraction = 0.95;
+
 struct ForwardResult {
-  FeStatus status = FeStatus::ok;
+  SampleStatus status = SampleStatus::ok;
   std::string message;             // why, when status != ok
   std::vector<double> depth;       // indentation delta / d0, starting at 0
   std::vector<double> force;       // F / (E d0^2), whole tube (half model doubled)

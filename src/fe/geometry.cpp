@@ -11,9 +11,9 @@ std::unique_ptr<WallGeometry> make_file_geometry(const ForwardProblem& problem);
 
 std::unique_ptr<WallGeometry> make_wall_geometry(const ForwardProblem& problem) {
   switch (problem.geometry) {
-    case Geometry::tube: return make_tube_geometry(problem);
-    case Geometry::sphere: return make_sphere_geometry(problem);
-    case Geometry::file: return make_file_geometry(problem);
+    case ShellFeGeometry::tube: return make_tube_geometry(problem);
+    case ShellFeGeometry::sphere: return make_sphere_geometry(problem);
+    case ShellFeGeometry::file: return make_file_geometry(problem);
   }
   return make_tube_geometry(problem);
 }

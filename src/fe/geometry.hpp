@@ -13,7 +13,7 @@
 
 #include "fe/forward.hpp"
 #include "fe/mesh.hpp"
-#include "fe/status.hpp"
+#include "growthuq/evaluation/sample_status.hpp"
 
 namespace growthuq::fe {
 
@@ -35,7 +35,7 @@ class WallGeometry {
 
   // What is wrong with the geometry's own input (one line), or nothing; `status` says which
   // kind of failure it is.
-  virtual std::optional<std::string> check(FeStatus& status) const = 0;
+  virtual std::optional<std::string> check(SampleStatus& status) const = 0;
 
   // Where (a reference distance behind the apex) the first mesh is finest. Nothing, with the
   // status and message in `result`, where no inflated state exists at all.

@@ -77,8 +77,8 @@ IndentationCurve indent(const IndentationInput& input, const ShellFeOptions& opt
     for (int pass = 0; pass < 8; ++pass) {
       const fe::ForwardResult inflated = fe::simulate_inflation(problem);
       curve.newton_iterations += inflated.newton_iterations;
-      if (inflated.status != fe::FeStatus::ok || !(inflated.thickness_stretch > 0)) {
-        curve.status = fe::to_sample_status(inflated.status);
+      if (inflated.status != SampleStatus::ok || !(inflated.thickness_stretch > 0)) {
+        curve.status = inflated.status;
         curve.message = "inflation for the turgid thickness: " + inflated.message;
         return curve;
       }
@@ -99,7 +99,7 @@ IndentationCurve indent(const IndentationInput& input, const ShellFeOptions& opt
     const fe::ForwardResult result = fe::simulate_forward(problem);
     fe::curve_in_si(result, d0, E, curve);
     if (keep_field) curve.field = fe::field_in_si(result, d0, E);
-    curve.status = fe::to_sample_status(result.status);
+    curve.status = result.status;
     curve.message = result.message;
     const fe::WindowFit fit = fe::fit_force_window(curve.depth, curve.force, low, high);
     if (fit.status == fe::WindowFitStatus::ok) {

@@ -80,9 +80,9 @@ Inflated inflate(const ShellFeMeasurement& m, const Instrument& instrument, cons
     const fe::ForwardResult result = fe::simulate_inflation(problem);
     ++inverse.inflation_solves;
     inverse.newton_iterations += result.newton_iterations;
-    failed = result.status != fe::FeStatus::ok || !(h0 > 0) || !(result.turgid_diameter > 0);
+    failed = result.status != SampleStatus::ok || !(h0 > 0) || !(result.turgid_diameter > 0);
     if (failed) {
-      inflated.status = fe::to_sample_status(result.status == fe::FeStatus::ok ? fe::FeStatus::burst : result.status);
+      inflated.status = result.status == SampleStatus::ok ? SampleStatus::burst : result.status;
       inflated.message = "finite-element inflation: " + result.message;
       return std::numeric_limits<double>::quiet_NaN();
     }
@@ -177,13 +177,13 @@ ShellFeInverse invert_indentation(const ShellFeMeasurement& m, const Instrument&
       inverse.young = match.young;
       inverse.pressure = inflated.pressure * match.young;
       inverse.fitted_stiffness = match.fitted_stiffness;
-      return finish(SampleStatus::ok, result.status == fe::FeStatus::ok
+      return finish(SampleStatus::ok, result.status == SampleStatus::ok
                                            ? ""
                                            : "E from the curve up to where the solver stopped (" +
-                                                 std::string(fe::to_string(result.status)) + ")");
+                                                 std::string(to_string(result.status)) + ")");
     }
-    if (result.status != fe::FeStatus::ok) {
-      return finish(fe::to_sample_status(result.status), "force curve: " + result.message);
+    if (result.status != SampleStatus::ok) {
+      return finish(result.status, "force curve: " + result.message);
     }
     if (match.status != fe::ModulusMatchStatus::curve_too_short) {
       return finish(SampleStatus::no_modulus_root, "no E gives k = " + format_double(k) + " N/m over the window");

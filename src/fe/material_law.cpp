@@ -116,9 +116,9 @@ AcoshSquared acosh_squared(double x) {
 double membrane_energy_density(const WallMaterial& material, const Eigen::Vector3d& c,
                                Eigen::Vector3d* gradient, Eigen::Matrix3d* hessian) {
   switch (material.law) {
-    case MaterialLaw::saint_venant_kirchhoff:
+    case ShellFeLaw::saint_venant_kirchhoff:
       return stvk_energy(material, c, gradient, hessian);
-    case MaterialLaw::hencky:
+    case ShellFeLaw::hencky:
       return hencky_energy(material, c, gradient, hessian);
   }
   return std::numeric_limits<double>::quiet_NaN();  // unreachable: every enumerator handled
@@ -135,11 +135,11 @@ Eigen::Matrix2d second_piola_kirchhoff(const WallMaterial& material, const Eigen
 double thickness_stretch(const WallMaterial& material, const Eigen::Vector3d& c) {
   const double ratio = material.poisson / (1.0 - material.poisson);
   switch (material.law) {
-    case MaterialLaw::saint_venant_kirchhoff: {
+    case ShellFeLaw::saint_venant_kirchhoff: {
       const double e33 = -ratio * 0.5 * (c(0) + c(1) - 2.0);
       return std::sqrt(std::fmax(0.0, 1.0 + 2.0 * e33));
     }
-    case MaterialLaw::hencky: {
+    case ShellFeLaw::hencky: {
       const double det = c(0) * c(1) - c(2) * c(2);
       if (!(det > 0.0)) return 0.0;  // an inverted element has no thickness stretch
       return std::exp(-ratio * 0.5 * std::log(det));

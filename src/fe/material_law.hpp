@@ -9,12 +9,9 @@
 
 namespace growthuq::fe {
 
-// The solver's name for the public word (growthuq/fe/shell_fe_vocabulary.hpp; CLI names stvk, log).
-using MaterialLaw = ShellFeLaw;
-
 // What an element needs of the wall (dimensionless: young = 1 in the solver).
 struct WallMaterial {
-  MaterialLaw law = MaterialLaw::hencky;
+  ShellFeLaw law = ShellFeLaw::hencky;
   double young = 1.0;
   double poisson = 0.2;
   double thickness = 0.0;  // h0 / d0 (membrane); bending uses `bending_thickness` of its stencil

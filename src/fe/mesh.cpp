@@ -216,11 +216,11 @@ TriangleMesh mirrored(const TriangleMesh& half) {
 
 }  // namespace
 
-MeshSizing mesh_sizing(MeshLevel level, double probe_radius, double thickness) {
+MeshSizing mesh_sizing(ShellFeMesh level, double probe_radius, double thickness) {
   const double bending_length = std::sqrt(thickness * 0.5);
-  const double scale = level == MeshLevel::coarse     ? 1.0
-                       : level == MeshLevel::standard ? std::numbers::sqrt2 / 2
-                       : level == MeshLevel::fine     ? 0.5
+  const double scale = level == ShellFeMesh::coarse     ? 1.0
+                       : level == ShellFeMesh::standard ? std::numbers::sqrt2 / 2
+                       : level == ShellFeMesh::fine     ? 0.5
                                                       : std::numbers::sqrt2 / 4;
   // A probe wider than the bending length: the wall no longer wraps it, and the contact patch
   // shrinks far below both (0.03 d0 under a probe of 0.19 d0 on a wall of bending length 0.16

@@ -13,10 +13,6 @@
 
 namespace growthuq::fe {
 
-// The solver's names for the public words (growthuq/fe/shell_fe_vocabulary.hpp).
-using Geometry = ShellFeGeometry;
-using MeshLevel = ShellFeMesh;
-
 struct TriangleMesh {
   Eigen::Matrix3Xd positions;             // reference (unstressed) positions, / d0
   std::vector<std::array<int, 3>> faces;  // counter-clockwise seen from outside
@@ -39,7 +35,7 @@ struct MeshSizing {
 // (R = 1/2): the finest size resolves the smaller of the two over a fine region 2 rho wide; a
 // probe wider than b gets cells down to b/16 over a region b wide instead (mesh.cpp says why);
 // each level is sqrt(2) finer than the one before it.
-MeshSizing mesh_sizing(MeshLevel level, double probe_radius, double thickness);
+MeshSizing mesh_sizing(ShellFeMesh level, double probe_radius, double thickness);
 
 // The capped tube of unit diameter: a cylinder from the open distal ring in the plane z = 0 to
 // z = L - 1/2, closed by a hemisphere whose apex is at z = L. The cap is an octant-patch

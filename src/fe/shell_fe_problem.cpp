@@ -32,18 +32,6 @@ void check_shell_poisson(double poisson, std::string_view location) {
   }
 }
 
-SampleStatus to_sample_status(FeStatus status) {
-  switch (status) {
-    case FeStatus::ok: return SampleStatus::ok;
-    case FeStatus::not_converged: return SampleStatus::not_converged;
-    case FeStatus::burst: return SampleStatus::burst;
-    case FeStatus::contact_lost: return SampleStatus::contact_lost;
-    case FeStatus::probe_beyond_mesh: return SampleStatus::probe_beyond_mesh;
-    case FeStatus::invalid_input: return SampleStatus::invalid_input;
-  }
-  return SampleStatus::not_converged;
-}
-
 double far_field_unstressed_thickness(ShellFeLaw law, double pressure_over_young, double turgid_thickness,
                                       double poisson) {
   const FarFieldTurgidInflation inflated =

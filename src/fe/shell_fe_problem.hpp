@@ -1,6 +1,6 @@
 // The bridge from the SI public API (growthuq/fe/indentation.hpp) to the dimensionless solver
-// (fe/forward.hpp): the problem from options and a sample, the solver's status as the API's,
-// the inflated state's unstressed thickness, and a result's curve and field in SI.
+// (fe/forward.hpp): the problem from options and a sample, the inflated state's unstressed
+// thickness, and a result's curve and field in SI.
 #pragma once
 
 #include <string_view>
@@ -18,8 +18,6 @@ ForwardProblem make_problem(const ShellFeOptions& options, double plasmolysed_di
 // The shell's laws need nu in [0, 0.5) (an isotropic solid thinning under tension); InputError
 // naming key nu otherwise.
 void check_shell_poisson(double poisson, std::string_view location);
-
-SampleStatus to_sample_status(FeStatus status);
 
 // h0/d0 for a turgid h/d0 at p/E in the far field (far_field_inflation_to_turgid_thickness: a
 // bracketed root on the rising branch of the pressure group); 0 when the wall bursts.

@@ -14,8 +14,8 @@ class SphereGeometry final : public WallGeometry {
  public:
   using WallGeometry::WallGeometry;
 
-  std::optional<std::string> check(FeStatus& status) const override {
-    status = FeStatus::ok;
+  std::optional<std::string> check(SampleStatus& status) const override {
+    status = SampleStatus::ok;
     return std::nullopt;
   }
 

@@ -15,7 +15,7 @@ namespace {
 class TubeGeometry final : public WallGeometry {
  public:
   using WallGeometry::WallGeometry;
-  std::optional<std::string> check(FeStatus& status) const override;
+  std::optional<std::string> check(SampleStatus& status) const override;
   std::optional<double> first_focus(ForwardResult& result) const override;
   WallSetup setup(double focus) const override;
   std::optional<double> refocus(const WallSetup& setup, const Eigen::Matrix3Xd& x, double focus,
@@ -28,18 +28,18 @@ class TubeGeometry final : public WallGeometry {
   double reference_distance(const TriangleMesh& mesh, const Eigen::Matrix3Xd& x, double distance) const;
 };
 
-std::optional<std::string> TubeGeometry::check(FeStatus& status) const {
+std::optional<std::string> TubeGeometry::check(SampleStatus& status) const {
   const ForwardProblem& p = problem_;
-  status = FeStatus::invalid_input;
+  status = SampleStatus::invalid_input;
   if (!std::isfinite(p.tube_length) || !std::isfinite(p.probe_distance) || !(p.tube_length >= 1.0)) {
     return "tube length L/d0 = " + std::to_string(p.tube_length) + ": expected >= 1";
   }
   if (!(p.probe_distance > 0 && p.probe_distance <= p.tube_length - 0.5)) {
-    status = FeStatus::probe_beyond_mesh;
+    status = SampleStatus::probe_beyond_mesh;
     return "probe distance a/d0 = " + std::to_string(p.probe_distance) +
            ": expected in (0, L/d0 - 1/2] (on the cap or the cylinder, away from the pinned end)";
   }
-  status = FeStatus::ok;
+  status = SampleStatus::ok;
   return std::nullopt;
 }
 
@@ -47,7 +47,7 @@ std::optional<double> TubeGeometry::first_focus(ForwardResult& result) const {
   const ForwardProblem& p = problem_;
   const FarFieldInflation far = far_field_inflation(far_field_law(p.law), p.pressure, p.thickness, p.poisson);
   if (far.burst) {
-    result.status = FeStatus::burst;
+    result.status = SampleStatus::burst;
     result.message = "p/E = " + std::to_string(p.pressure) + " is beyond the pressure maximum of the closed-end tube "
                      "(far field, hoop stretch " + std::to_string(far.hoop_stretch) + " there)";
     return std::nullopt;

@@ -20,7 +20,7 @@ struct EnvelopePoint {
   double p, young, h0, d0, rho, depth;  // SI; depth: the deepest indentation, past the window's top
 };
 
-inline double stiffness(const DimensionlessPoint& point, double d0, double depth, fe::MeshLevel level, int& iterations) {
+inline double stiffness(const DimensionlessPoint& point, double d0, double depth, ShellFeMesh level, int& iterations) {
   fe::ForwardProblem problem;
   problem.pressure = point.pressure;
   problem.thickness = point.thickness;
@@ -35,7 +35,7 @@ inline double stiffness(const DimensionlessPoint& point, double d0, double depth
   // solver stopped later (measured once: the fine level stopped at 2.22 of 2.3 um, beyond the
   // top at about 2.1 um).
   const fe::WindowFit fit = fe::fit_force_window(result.depth, result.force, point.window_low, point.window_high);
-  if (result.status != fe::FeStatus::ok) {
+  if (result.status != SampleStatus::ok) {
     std::printf("convergence: status %d: %s\n", static_cast<int>(result.status), result.message.c_str());
   }
   if (fit.status != fe::WindowFitStatus::ok) {
@@ -47,8 +47,8 @@ inline double stiffness(const DimensionlessPoint& point, double d0, double depth
 
 // Three levels of a point, their Richardson order and limit, the default level (one of the
 // three) within 1 % of it.
-inline void check_convergence(const EnvelopePoint& e, fe::MeshLevel coarse_level, fe::MeshLevel middle_level,
-                              fe::MeshLevel fine_level) {
+inline void check_convergence(const EnvelopePoint& e, ShellFeMesh coarse_level, ShellFeMesh middle_level,
+                              ShellFeMesh fine_level) {
   CAPTURE(e.name);
   const auto point = dimensionless_point(e.p, e.young, e.h0, e.d0, e.rho);
   int i1 = 0, i2 = 0, i3 = 0;
@@ -56,8 +56,8 @@ inline void check_convergence(const EnvelopePoint& e, fe::MeshLevel coarse_level
   const double middle = stiffness(point, e.d0, e.depth, middle_level, i2);
   const double fine = stiffness(point, e.d0, e.depth, fine_level, i3);
   const Richardson r = richardson(coarse, middle, fine, std::sqrt(2.0));
-  const double standard = coarse_level == fe::MeshLevel::standard   ? coarse
-                          : middle_level == fe::MeshLevel::standard ? middle
+  const double standard = coarse_level == ShellFeMesh::standard   ? coarse
+                          : middle_level == ShellFeMesh::standard ? middle
                                                                     : fine;
   const double force_scale = e.young * e.d0;  // k in N/m from k / (E d0)
   std::printf("convergence %s: k %.4f %.4f %.4f N/m; order %.2f limit %.4f N/m; default %+.3f %% "

@@ -11,6 +11,8 @@
 #include "growthuq/mechanics/thin_shell.hpp"
 
 using namespace growthuq::fe;
+using growthuq::SampleStatus;
+using growthuq::ShellFeLaw;
 
 namespace {
 
@@ -29,7 +31,7 @@ std::pair<double, double> equilibrium_residuals(FarFieldLaw law, double p, doubl
     sigma_z = (ez + nu * et) / (1 - nu * nu);
   } else {
     WallMaterial m;
-    m.law = law == FarFieldLaw::hencky ? MaterialLaw::hencky : MaterialLaw::saint_venant_kirchhoff;
+    m.law = law == FarFieldLaw::hencky ? ShellFeLaw::hencky : ShellFeLaw::saint_venant_kirchhoff;
     m.poisson = nu;
     m.thickness = h0;
     const Eigen::Matrix2d stress =

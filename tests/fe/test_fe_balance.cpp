@@ -40,8 +40,8 @@ void check_balance(fe::ContactMethod method) {
   IndentedTube tube;
   fe::ShellProblem& problem = tube.problem;
   problem.mesh = fe::make_tube_mesh(length, probe_distance, /*half_model=*/true,
-                                    fe::mesh_sizing(fe::MeshLevel::coarse, rho, thickness));
-  problem.material = fe::WallMaterial{fe::MaterialLaw::hencky, 1.0, 0.2, thickness};
+                                    fe::mesh_sizing(ShellFeMesh::coarse, rho, thickness));
+  problem.material = fe::WallMaterial{ShellFeLaw::hencky, 1.0, 0.2, thickness};
   problem.mirror_y0 = true;
   problem.fixed = fe::mirror_and_end_ring_fixed(problem.mesh, true, true);
   for (Eigen::Index v = 0; v < problem.mesh.positions.cols(); ++v) {
@@ -56,7 +56,7 @@ void check_balance(fe::ContactMethod method) {
   fe::LoadSteppingOptions inflation;
   const fe::EquilibriumResult inflated = fe::solve_equilibrium(
       objective, solver, tube.x, [](double t, fe::ShellLoads& loads) { loads.pressure = t * pressure; }, inflation);
-  REQUIRE(inflated.status == fe::FeStatus::ok);
+  REQUIRE(inflated.status == SampleStatus::ok);
 
   // Probe over the node nearest the probe axis, substrate touching the lowest node.
   const double probe_z = tube.x.row(2).maxCoeff() - probe_distance;
@@ -81,7 +81,7 @@ void check_balance(fe::ContactMethod method) {
       [&](double t, fe::ShellLoads& loads) { loads.obstacles.spheres.front().centre = start - Eigen::Vector3d(t * depth, 0, 0); },
       indentation);
   INFO(indented.message);
-  REQUIRE(indented.status == fe::FeStatus::ok);
+  REQUIRE(indented.status == SampleStatus::ok);
 
   const fe::ContactState contact = objective.contact_state(tube.x);
   const double probe_force = contact.sphere_force.at(0).x();       // wall on probe, +x
@@ -163,15 +163,15 @@ TEST_CASE("the half model and the full model give the same stiffness within 0.5 
   problem.tube_length = 100.0 / 5.35;
   problem.probe_distance = 10.0 / 5.35;
   problem.max_depth = 0.35;
-  problem.mesh = fe::MeshLevel::coarse;
+  problem.mesh = ShellFeMesh::coarse;
   problem.half_model = true;
   const fe::ForwardResult half = fe::simulate_forward(problem);
   problem.half_model = false;
   const fe::ForwardResult full = fe::simulate_forward(problem);
   std::printf("half/full: status %d (%s) / %d (%s)\n", static_cast<int>(half.status), half.message.c_str(),
               static_cast<int>(full.status), full.message.c_str());
-  REQUIRE(half.status == fe::FeStatus::ok);
-  REQUIRE(full.status == fe::FeStatus::ok);
+  REQUIRE(half.status == SampleStatus::ok);
+  REQUIRE(full.status == SampleStatus::ok);
   const double k_half = testing::window_slope(half.depth, half.force, point.window_low, point.window_high);
   const double k_full = testing::window_slope(full.depth, full.force, point.window_low, point.window_high);
   std::printf("half/full: k_half %.6e k_full %.6e (E d0) relative %.2e; Newton %d / %d\n", k_half, k_full,

@@ -57,7 +57,7 @@ LoadPath run_semicylinder(int hoop_segments, int axial_segments) {
       testing::make_semicylinder_mesh(hoop_segments, axial_segments, /*alternating=*/false, /*hoop_grading=*/0.6, /*axial_grading=*/0.6);
   fe::ShellProblem problem;
   problem.mesh = built.mesh;
-  problem.material.law = fe::MaterialLaw::saint_venant_kirchhoff;
+  problem.material.law = ShellFeLaw::saint_venant_kirchhoff;
   problem.material.young = 1.0;  // forces below are P / E
   problem.material.poisson = SemicylinderData::poisson;
   problem.material.thickness = SemicylinderData::thickness;
@@ -89,7 +89,7 @@ LoadPath run_semicylinder(int hoop_segments, int axial_segments) {
   };
   const fe::EquilibriumResult result = fe::solve_equilibrium(objective, solver, x, set_loads, options, record);
   path.newton_iterations = result.newton_iterations;
-  path.completed = result.status == fe::FeStatus::ok && result.reached >= 1.0 - 1e-12;
+  path.completed = result.status == SampleStatus::ok && result.reached >= 1.0 - 1e-12;
   path.message = result.message;
   return path;
 }

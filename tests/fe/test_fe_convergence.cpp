@@ -13,6 +13,6 @@ using namespace growthuq;
 
 TEST_CASE("k converges with the mesh and the default level is within 1 % of the extrapolated limit") {
   // p = 0.45 MPa, E = 45 MPa, h0 = 211 nm (turgid h about 200 nm), d0 = 5.35 um, rho = 0.25 um.
-  testing::check_convergence({"Arabidopsis-like", 0.45e6, 45e6, 211e-9, 5.35e-6, 0.25e-6, 2.3e-6}, fe::MeshLevel::coarse,
-                             fe::MeshLevel::standard, fe::MeshLevel::fine);
+  testing::check_convergence({"Arabidopsis-like", 0.45e6, 45e6, 211e-9, 5.35e-6, 0.25e-6, 2.3e-6}, ShellFeMesh::coarse,
+                             ShellFeMesh::standard, ShellFeMesh::fine);
 }

@@ -12,6 +12,6 @@ using namespace growthuq;
 // range, tools/bench/fe-mesh-convergence), so the order and limit come from the default, fine and
 // finer levels (about 4 minutes of one core in all).
 TEST_CASE("thick wall under a large probe: k converges, the default level within 1 % of the limit") {
-  testing::check_convergence({"thick wall, large probe", 0.6e6, 150e6, 405.2e-9, 8e-6, 1.5e-6, 0.8e-6}, fe::MeshLevel::standard,
-                             fe::MeshLevel::fine, fe::MeshLevel::finer);
+  testing::check_convergence({"thick wall, large probe", 0.6e6, 150e6, 405.2e-9, 8e-6, 1.5e-6, 0.8e-6}, ShellFeMesh::standard,
+                             ShellFeMesh::fine, ShellFeMesh::finer);
 }

@@ -51,7 +51,7 @@ TEST_CASE("every corner of the envelope ends with a value or a status, in bounde
         problem.tube_length = 6.0;
         problem.probe_distance = 1.5;
         problem.max_depth = 0.1;
-        problem.mesh = fe::MeshLevel::coarse;
+        problem.mesh = ShellFeMesh::coarse;
         fe::ForwardResult result;
         bool threw = false;
         try {
@@ -72,7 +72,7 @@ TEST_CASE("every corner of the envelope ends with a value or a status, in bounde
                     result.force.empty() ? 0.0 : result.force.back(), result.newton_iterations,
                     result.message.empty() ? "" : ", ", result.message.c_str());
         CHECK(result.newton_iterations <= bound);
-        if (result.status == fe::FeStatus::ok) {
+        if (result.status == SampleStatus::ok) {
           CHECK(finite);
           CHECK(result.force.size() >= 2);
           CHECK(result.depth.back() == doctest::Approx(problem.max_depth));

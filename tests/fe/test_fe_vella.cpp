@@ -95,7 +95,7 @@ VellaMeasurement measure(double target_tau, double finest_over_length) {
 
   fe::ShellProblem problem;
   problem.mesh = fe::make_sphere_mesh(/*half_model=*/true, sizing);
-  problem.material.law = fe::MaterialLaw::saint_venant_kirchhoff;
+  problem.material.law = ShellFeLaw::saint_venant_kirchhoff;
   problem.material.young = 1.0;
   problem.material.poisson = 0.0;
   problem.material.thickness = thickness;

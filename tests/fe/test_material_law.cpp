@@ -11,11 +11,12 @@
 #include "support/random_draws.hpp"
 
 using namespace growthuq::fe;
+using growthuq::ShellFeLaw;
 using growthuq::testing::unit_uniform;
 
 namespace {
 
-WallMaterial wall(MaterialLaw law, double nu = 0.3, double t = 0.03) {
+WallMaterial wall(ShellFeLaw law, double nu = 0.3, double t = 0.03) {
   WallMaterial m;
   m.law = law;
   m.poisson = nu;
@@ -109,7 +110,7 @@ TEST_CASE("membrane laws: gradient and Hessian against central differences") {
   // ~eps/1e-6 ~ 1e-10 relative, so 1e-7 of the largest entry is a safe bound that any sign or
   // factor error (relative size >= 1e-2) exceeds by far.
   std::mt19937_64 rng(12);
-  for (MaterialLaw law : {MaterialLaw::saint_venant_kirchhoff, MaterialLaw::hencky}) {
+  for (ShellFeLaw law : {ShellFeLaw::saint_venant_kirchhoff, ShellFeLaw::hencky}) {
     const WallMaterial m = wall(law);
     for (int trial = 0; trial < 50; ++trial) {
       const Eigen::Vector3d c = random_cauchy_green(rng);
@@ -139,7 +140,7 @@ TEST_CASE("membrane laws: gradient and Hessian against central differences") {
 TEST_CASE("Hencky law against the long-double spectral form, at, near and far from coincidence") {
   // Tolerance 1e-13 k: the double evaluation is accurate to a few eps times k; the long-double
   // divided difference at relative split delta is accurate to ~1e-19/delta (delta >= 1e-5).
-  const WallMaterial m = wall(MaterialLaw::hencky, 0.2, 0.05);
+  const WallMaterial m = wall(ShellFeLaw::hencky, 0.2, 0.05);
   SUBCASE("exactly at coincidence, C = lambda I") {
     for (double c : {0.5, 1.0, 1.0 + 1e-9, 1.3, 2.5}) {
       CHECK(deviation_from_spectral(m, Eigen::Vector3d(c, c, 0.0)) < 1e-13);
@@ -174,7 +175,7 @@ TEST_CASE("Hencky law against the long-double spectral form, at, near and far fr
     CHECK(g.cwiseAbs().maxCoeff() == 0.0);
     // At C = I both strains are (C - I)/2 to first order, so the Hessian equals St-VK's.
     Eigen::Matrix3d h_stvk;
-    membrane_energy_density(wall(MaterialLaw::saint_venant_kirchhoff, 0.2, 0.05), Eigen::Vector3d(1, 1, 0),
+    membrane_energy_density(wall(ShellFeLaw::saint_venant_kirchhoff, 0.2, 0.05), Eigen::Vector3d(1, 1, 0),
                             nullptr, &h_stvk);
     CHECK((h - h_stvk).cwiseAbs().maxCoeff() < 1e-15);
   }
@@ -206,11 +207,11 @@ TEST_CASE("thickness stretch of plane stress from the principal stretches") {
     const Eigen::Vector3d c = rotated_diagonal(l1 * l1, l2 * l2, 6.0 * unit_uniform(rng));
     const double nu = 0.3;
     const double e33 = -nu / (1 - nu) * 0.5 * (l1 * l1 - 1 + l2 * l2 - 1);
-    CHECK(thickness_stretch(wall(MaterialLaw::saint_venant_kirchhoff, nu), c) ==
+    CHECK(thickness_stretch(wall(ShellFeLaw::saint_venant_kirchhoff, nu), c) ==
           doctest::Approx(std::sqrt(1 + 2 * e33)).epsilon(1e-14));
-    CHECK(thickness_stretch(wall(MaterialLaw::hencky, nu), c) ==
+    CHECK(thickness_stretch(wall(ShellFeLaw::hencky, nu), c) ==
           doctest::Approx(std::exp(-nu / (1 - nu) * (std::log(l1) + std::log(l2)))).epsilon(1e-14));
   }
   // Collapse of the St-VK plane-stress thickness (1 + 2 E33 <= 0) gives 0, not NaN.
-  CHECK(thickness_stretch(wall(MaterialLaw::saint_venant_kirchhoff, 0.45), Eigen::Vector3d(3, 3, 0)) == 0.0);
+  CHECK(thickness_stretch(wall(ShellFeLaw::saint_venant_kirchhoff, 0.45), Eigen::Vector3d(3, 3, 0)) == 0.0);
 }

@@ -11,6 +11,7 @@
 #include "growthuq/core/error.hpp"
 
 using namespace growthuq::fe;
+using growthuq::ShellFeLaw;
 using namespace growthuq::fe::testing;
 using growthuq::testing::unit_uniform;
 using Vec9 = Eigen::Matrix<double, 9, 1>;
@@ -18,7 +19,7 @@ using Mat9 = Eigen::Matrix<double, 9, 9>;
 
 namespace {
 
-WallMaterial wall(MaterialLaw law, double nu = 0.3, double t = 0.02) {
+WallMaterial wall(ShellFeLaw law, double nu = 0.3, double t = 0.02) {
   WallMaterial m;
   m.law = law;
   m.poisson = nu;
@@ -47,7 +48,7 @@ TEST_CASE("membrane: gradient and Hessian against central differences") {
   // Step 1e-7 on positions ~1 (edges ~0.1): truncation ~1e-14/edge^2 relative, rounding ~eps
   // x/step ~ 1e-9 of the gradient; 1e-6 of the largest entry catches any wrong term.
   std::mt19937_64 rng(3);
-  for (MaterialLaw law : {MaterialLaw::saint_venant_kirchhoff, MaterialLaw::hencky}) {
+  for (ShellFeLaw law : {ShellFeLaw::saint_venant_kirchhoff, ShellFeLaw::hencky}) {
     const WallMaterial m = wall(law);
     for (int trial = 0; trial < 40; ++trial) {
       Eigen::Vector3d X0, X1, X2;
@@ -79,7 +80,7 @@ TEST_CASE("membrane: gradient and Hessian against central differences") {
 
 TEST_CASE("membrane: rigid motions give zero energy and zero force") {
   std::mt19937_64 rng(4);
-  for (MaterialLaw law : {MaterialLaw::saint_venant_kirchhoff, MaterialLaw::hencky}) {
+  for (ShellFeLaw law : {ShellFeLaw::saint_venant_kirchhoff, ShellFeLaw::hencky}) {
     const WallMaterial m = wall(law);
     for (int trial = 0; trial < 20; ++trial) {
       Eigen::Vector3d X0, X1, X2;
@@ -107,7 +108,7 @@ TEST_CASE("membrane: a uniform stretch gives the law's stress") {
   std::mt19937_64 rng(8);
   const double nu = 0.25, t = 0.04;
   const double k = t / (2 * (1 - nu * nu));
-  for (MaterialLaw law : {MaterialLaw::saint_venant_kirchhoff, MaterialLaw::hencky}) {
+  for (ShellFeLaw law : {ShellFeLaw::saint_venant_kirchhoff, ShellFeLaw::hencky}) {
     const WallMaterial m = wall(law, nu, t);
     for (int trial = 0; trial < 10; ++trial) {
       const Eigen::Vector3d X[3] = {Eigen::Vector3d(0.1, -0.2, 0), Eigen::Vector3d(0.25, -0.15, 0),
@@ -119,7 +120,7 @@ TEST_CASE("membrane: a uniform stretch gives the law's stress") {
       const Eigen::Matrix2d u = n * Eigen::Vector2d(l1, l2).asDiagonal() * n.transpose();
       // The law's 2nd PK resultant S in the principal basis, then rotated.
       Eigen::Vector2d s_principal;
-      if (law == MaterialLaw::saint_venant_kirchhoff) {
+      if (law == ShellFeLaw::saint_venant_kirchhoff) {
         const double e1 = 0.5 * (l1 * l1 - 1), e2 = 0.5 * (l2 * l2 - 1);
         s_principal << 2 * k * (e1 + nu * e2), 2 * k * (e2 + nu * e1);
       } else {  // Kirchhoff tau_i = 2k (eps_i + nu eps_j), S_i = tau_i / l_i^2
@@ -146,7 +147,7 @@ TEST_CASE("membrane: a uniform stretch gives the law's stress") {
       // Cauchy stresses: principal values of F S F^T / (l1 l2 lambda3 t).
       const MembraneStress stress = membrane_stress(m, ref, x);
       double lambda3, sig1, sig2;
-      if (law == MaterialLaw::saint_venant_kirchhoff) {
+      if (law == ShellFeLaw::saint_venant_kirchhoff) {
         lambda3 = std::sqrt(1 - 2 * nu / (1 - nu) * 0.5 * (l1 * l1 + l2 * l2 - 2));
       } else {
         lambda3 = std::exp(-nu / (1 - nu) * (std::log(l1) + std::log(l2)));
@@ -167,7 +168,7 @@ TEST_CASE("membrane: an inverted Hencky triangle has infinite energy; a degenera
   const MembraneReference ref = make_membrane_reference(X0, X1, X2);
   CHECK(ref.area == doctest::Approx(0.5).epsilon(1e-15));
   const Vec9 flat = stack(X0, X1, X0 + 0.5 * (X1 - X0));  // collapsed to a line: det C = 0
-  CHECK(std::isinf(membrane_energy(wall(MaterialLaw::hencky), ref, flat, nullptr, nullptr)));
-  CHECK(std::isfinite(membrane_energy(wall(MaterialLaw::saint_venant_kirchhoff), ref, flat, nullptr, nullptr)));
+  CHECK(std::isinf(membrane_energy(wall(ShellFeLaw::hencky), ref, flat, nullptr, nullptr)));
+  CHECK(std::isfinite(membrane_energy(wall(ShellFeLaw::saint_venant_kirchhoff), ref, flat, nullptr, nullptr)));
   CHECK_THROWS_AS(make_membrane_reference(X0, X1, X0 + 2.0 * (X1 - X0)), growthuq::InputError);
 }

@@ -12,6 +12,7 @@
 #include "growthuq/core/error.hpp"
 
 using namespace growthuq::fe;
+using growthuq::ShellFeMesh;
 
 namespace {
 
@@ -48,7 +49,7 @@ double min_angle_degrees(const TriangleMesh& mesh) {
 
 TEST_CASE("half tube mesh: nodes on the capped tube, open only on y = 0 and z = 0, graded under the probe") {
   const double L = 10.0, a = 1.0;
-  const MeshSizing sizing = mesh_sizing(MeshLevel::standard, 0.05, 0.02);
+  const MeshSizing sizing = mesh_sizing(ShellFeMesh::standard, 0.05, 0.02);
   const TriangleMesh mesh = make_tube_mesh(L, a, true, sizing);
   const double cap_base = L - 0.5;
   for (Eigen::Index v = 0; v < mesh.positions.cols(); ++v) {
@@ -95,7 +96,7 @@ TEST_CASE("half tube mesh: nodes on the capped tube, open only on y = 0 and z = 
 }
 
 TEST_CASE("full tube mesh is the half and its mirror image: volume exactly twice") {
-  const MeshSizing sizing = mesh_sizing(MeshLevel::coarse, 0.1, 0.02);
+  const MeshSizing sizing = mesh_sizing(ShellFeMesh::coarse, 0.1, 0.02);
   const TriangleMesh half = make_tube_mesh(6.0, 1.0, true, sizing);
   const TriangleMesh full = make_tube_mesh(6.0, 1.0, false, sizing);
   CHECK(full.faces.size() == 2 * half.faces.size());
@@ -128,26 +129,26 @@ TEST_CASE("sphere volume converges to 4/3 pi r^3 at second order in the edge len
 }
 
 TEST_CASE("sphere mesh is graded around the pole +x") {
-  const MeshSizing sizing = mesh_sizing(MeshLevel::standard, 0.02, 0.005);
+  const MeshSizing sizing = mesh_sizing(ShellFeMesh::standard, 0.02, 0.005);
   const TriangleMesh mesh = make_sphere_mesh(true, sizing);
   double nearest = 1.0;
   for (Eigen::Index v = 0; v < mesh.positions.cols(); ++v) {
     CHECK(mesh.positions.col(v).norm() == doctest::Approx(0.5).epsilon(1e-12));
     if (v > 0) nearest = std::min(nearest, (mesh.positions.col(v) - Eigen::Vector3d(0.5, 0, 0)).norm());
   }
-  CHECK(mesh_sizing(MeshLevel::standard, 0.02, 0.005).finest < std::sqrt(0.005 * 0.5) / 4);
+  CHECK(mesh_sizing(ShellFeMesh::standard, 0.02, 0.005).finest < std::sqrt(0.005 * 0.5) / 4);
   CHECK(min_angle_degrees(mesh) > 20.0);
 }
 
 TEST_CASE("mesh sizing: each level sqrt(2) finer, the finest size below probe radius and bending length") {
-  const MeshSizing c = mesh_sizing(MeshLevel::coarse, 0.05, 0.02);
-  const MeshSizing s = mesh_sizing(MeshLevel::standard, 0.05, 0.02);
-  const MeshSizing f = mesh_sizing(MeshLevel::fine, 0.05, 0.02);
+  const MeshSizing c = mesh_sizing(ShellFeMesh::coarse, 0.05, 0.02);
+  const MeshSizing s = mesh_sizing(ShellFeMesh::standard, 0.05, 0.02);
+  const MeshSizing f = mesh_sizing(ShellFeMesh::fine, 0.05, 0.02);
   CHECK(c.finest / s.finest == doctest::Approx(std::sqrt(2.0)));
   CHECK(s.finest / f.finest == doctest::Approx(std::sqrt(2.0)));
   CHECK(c.finest <= 0.5 * 0.05);
   CHECK(c.fine_radius >= std::sqrt(0.01));
-  const MeshSizing r = mesh_sizing(MeshLevel::finer, 0.05, 0.02);
+  const MeshSizing r = mesh_sizing(ShellFeMesh::finer, 0.05, 0.02);
   CHECK(f.finest / r.finest == doctest::Approx(std::sqrt(2.0)));
 }
 
@@ -159,20 +160,20 @@ TEST_CASE("mesh sizing under a probe wider than the bending length: finer cells,
   const double thickness = 0.05;
   const double b = std::sqrt(0.5 * thickness);
   for (double rho : {0.3 * b, 0.9 * b, b}) {
-    const MeshSizing s = mesh_sizing(MeshLevel::coarse, rho, thickness);
+    const MeshSizing s = mesh_sizing(ShellFeMesh::coarse, rho, thickness);
     CHECK(s.finest == doctest::Approx(0.5 * rho));
     CHECK(s.fine_radius == doctest::Approx(2 * rho));
   }
   for (double rho : {1.2 * b, 2.0 * b, 10.0 * b}) {
-    const MeshSizing s = mesh_sizing(MeshLevel::coarse, rho, thickness);
+    const MeshSizing s = mesh_sizing(ShellFeMesh::coarse, rho, thickness);
     CHECK(s.finest == doctest::Approx(b / 16));
     CHECK(s.fine_radius == doctest::Approx(b));
   }
   // Continuity: the sizes change by O(step) across the ramp's two ends and inside it.
   const double step = 1e-7 * b;
   for (double rho = 0.95 * b; rho < 1.25 * b; rho += 0.01 * b) {
-    const MeshSizing here = mesh_sizing(MeshLevel::coarse, rho, thickness);
-    const MeshSizing next = mesh_sizing(MeshLevel::coarse, rho + step, thickness);
+    const MeshSizing here = mesh_sizing(ShellFeMesh::coarse, rho, thickness);
+    const MeshSizing next = mesh_sizing(ShellFeMesh::coarse, rho + step, thickness);
     CAPTURE(rho / b);
     CHECK(std::fabs(next.finest - here.finest) < 1e-5 * b);
     CHECK(std::fabs(next.fine_radius - here.fine_radius) < 1e-5 * b);
@@ -183,7 +184,7 @@ TEST_CASE("mesh sizing under a probe wider than the bending length: finer cells,
 // plane): on a "4-8" patch of valence 4 and 8 the bending element has a checkerboard mode and
 // the probe's stiffness comes out 13-24 % soft (mesh_quality.hpp; test_fe_vella measures it).
 TEST_CASE("the tube and sphere meshes are regular (valence 6) where the probe presses, at every level") {
-  for (MeshLevel level : {MeshLevel::coarse, MeshLevel::standard, MeshLevel::fine}) {
+  for (ShellFeMesh level : {ShellFeMesh::coarse, ShellFeMesh::standard, ShellFeMesh::fine}) {
     for (double rho : {0.02, 0.05, 0.2}) {
       CAPTURE(rho);
       const MeshSizing sizing = mesh_sizing(level, rho, 0.03);

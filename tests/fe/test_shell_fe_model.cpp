@@ -150,3 +150,34 @@ TEST_CASE("shell_fe model: a soft tube whose window's top lies deeper than 0.45 
   CHECK(inverse.young == doctest::Approx(input.young).epsilon(2e-3));
   CHECK(inverse.pressure == doctest::Approx(input.pressure).epsilon(2e-3));
 }
+
+TEST_CASE("shell_fe model: a soft thin wall under a small probe that wraps it is probe_engulfed, not not_converged") {
+  // p = 0.3 MPa, E = 60 MPa, turgid h = 100 nm, d0 = 5 um, rho = 0.25 um: the wall wraps the
+  // probe down to its equator at about 1.96 um, short of the window's top (4 uN) and of the
+  // automatic depth, and the load steps stall there (src/fe/README.md, "Statuses and deep
+  // curves": growthuq indent --p-MPa 0.3 --E-MPa 60 --h-nm 100 --d0-um 5 --rho-um 0.25 --mesh coarse).
+  IndentationInput input = arabidopsis_like();
+  input.pressure = 0.3e6;
+  input.young = 60e6;
+  input.thickness = 100e-9;
+  input.plasmolysed_diameter = 5e-6;
+  const ShellFeOptions options = coarse();
+  const IndentationCurve curve = indent(input, options);
+  INFO(curve.message);
+  CHECK(curve.status == SampleStatus::probe_engulfed);
+  REQUIRE(curve.contact_radius.size() == curve.force.size());
+  REQUIRE(curve.force.size() > 2);
+  // Short of the window's top: no k.
+  CHECK(curve.force.back() < options.force_window[1]);
+  CHECK(curve.stiffness == 0.0);
+  // The contact reached the probe's equator: within 5 % of rho, and never beyond rho (a node held
+  // on the sphere is at most rho from its axis), where at a quarter of the depth it was well
+  // inside (measured 0.61 rho).
+  const double rho = input.instrument.probe_radius_m;
+  CHECK(curve.contact_radius.back() >= fe::engulfed_contact_fraction * rho);
+  CHECK(curve.contact_radius.back() <= rho * (1 + 1e-9));
+  std::size_t quarter = 0;
+  while (curve.depth[quarter] < 0.25 * curve.depth.back()) ++quarter;
+  CHECK(curve.contact_radius[quarter] < 0.8 * rho);
+  CHECK(curve.message.find("wraps the probe") != std::string::npos);
+}

@@ -14,6 +14,9 @@
 #include "fe/shell_objective.hpp"
 
 using namespace growthuq::fe;
+using growthuq::SampleStatus;
+using growthuq::ShellFeLaw;
+using growthuq::ShellFeMesh;
 
 namespace {
 
@@ -22,7 +25,7 @@ double hessian_entry(const Eigen::SparseMatrix<double>& lower, Eigen::Index i, E
 }
 
 // A half sphere under pressure, a probe, a plane and a point load, at a perturbed state.
-ShellProblem small_problem(MaterialLaw law) {
+ShellProblem small_problem(ShellFeLaw law) {
   ShellProblem problem;
   MeshSizing uniform{0.25, 0.0, 1.0, 0.25};
   problem.mesh = make_sphere_mesh(true, uniform);
@@ -40,7 +43,7 @@ ShellProblem small_problem(MaterialLaw law) {
 }  // namespace
 
 TEST_CASE("assembled gradient and Hessian agree with central differences of the total energy") {
-  for (MaterialLaw law : {MaterialLaw::hencky, MaterialLaw::saint_venant_kirchhoff}) {
+  for (ShellFeLaw law : {ShellFeLaw::hencky, ShellFeLaw::saint_venant_kirchhoff}) {
     const ShellAssembly assembly(small_problem(law));
     std::mt19937 rng(3);
     std::normal_distribution<double> n(0.0, 1.0);
@@ -88,8 +91,8 @@ TEST_CASE("assembled gradient and Hessian agree with central differences of the 
 
 TEST_CASE("Newton converges quadratically on the inflation of a capped tube") {
   ShellProblem problem;
-  problem.mesh = make_tube_mesh(4.0, 1.0, true, mesh_sizing(MeshLevel::coarse, 0.1, 0.02));
-  problem.material = WallMaterial{MaterialLaw::hencky, 1.0, 0.2, 0.02};
+  problem.mesh = make_tube_mesh(4.0, 1.0, true, mesh_sizing(ShellFeMesh::coarse, 0.1, 0.02));
+  problem.material = WallMaterial{ShellFeLaw::hencky, 1.0, 0.2, 0.02};
   problem.mirror_y0 = true;
   problem.fixed = mirror_and_end_ring_fixed(problem.mesh, true, true);
   ShellAssembly assembly(problem);
@@ -122,7 +125,7 @@ TEST_CASE("Newton converges quadratically on the inflation of a capped tube") {
 }
 
 TEST_CASE("inflated capped tube: turgid diameter, axial and thickness stretch of the far field within 0.2 %") {
-  for (MaterialLaw law : {MaterialLaw::hencky, MaterialLaw::saint_venant_kirchhoff}) {
+  for (ShellFeLaw law : {ShellFeLaw::hencky, ShellFeLaw::saint_venant_kirchhoff}) {
     ForwardProblem p;
     p.pressure = 0.005;  // about 17 % hoop strain (Hencky) at h0/d0 = 0.02
     p.thickness = 0.02;
@@ -131,9 +134,9 @@ TEST_CASE("inflated capped tube: turgid diameter, axial and thickness stretch of
     p.probe_radius = 0.05;
     p.tube_length = 10.0;
     p.probe_distance = 1.0;
-    p.mesh = MeshLevel::standard;
+    p.mesh = ShellFeMesh::standard;
     const ForwardResult r = simulate_inflation(p);
-    REQUIRE(r.status == FeStatus::ok);
+    REQUIRE(r.status == SampleStatus::ok);
     const FarFieldInflation far = far_field_inflation(far_field_law(law), p.pressure, p.thickness, p.poisson);
     MESSAGE("law " << static_cast<int>(law) << ": d " << r.turgid_diameter << " (far field " << far.hoop_stretch
                    << "), axial " << r.axial_stretch << " (" << far.axial_stretch << "), thickness "
@@ -152,9 +155,9 @@ TEST_CASE("forward protocol: rising force, penetration within 1e-3 rho, statuses
   p.tube_length = 6.0;
   p.probe_distance = 1.0;
   p.max_depth = 0.03;
-  p.mesh = MeshLevel::coarse;
+  p.mesh = ShellFeMesh::coarse;
   const ForwardResult r = simulate_forward(p);
-  REQUIRE(r.status == FeStatus::ok);
+  REQUIRE(r.status == SampleStatus::ok);
   REQUIRE(r.depth.size() >= 3);
   CHECK(r.depth.back() == doctest::Approx(p.max_depth));
   for (std::size_t k = 1; k < r.force.size(); ++k) CHECK(r.force[k] > r.force[k - 1]);
@@ -165,14 +168,14 @@ TEST_CASE("forward protocol: rising force, penetration within 1e-3 rho, statuses
 
   ForwardProblem bad = p;
   bad.thickness = -1;
-  CHECK(simulate_forward(bad).status == FeStatus::invalid_input);
+  CHECK(simulate_forward(bad).status == SampleStatus::invalid_input);
   bad = p;
   bad.probe_distance = 20;
-  CHECK(simulate_forward(bad).status == FeStatus::probe_beyond_mesh);
+  CHECK(simulate_forward(bad).status == SampleStatus::probe_beyond_mesh);
   ForwardProblem burst = p;
   burst.pressure = 0.01;  // beyond the Hencky tube's pressure maximum at h0/d0 = 0.02 (G_max ~ 0.35)
   const ForwardResult b = simulate_inflation(burst);
-  CHECK(b.status == FeStatus::burst);
+  CHECK(b.status == SampleStatus::burst);
   CHECK(!b.message.empty());
 }
 

@@ -242,8 +242,8 @@ void check_line(const H5::H5File& file, const LineResult& line) {
   status.read(codes.data(), H5::PredType::NATIVE_UINT8);
   for (std::size_t i = 0; i < codes.size(); ++i) CHECK(codes[i] == static_cast<std::uint8_t>(line.status[i]));
   const std::vector<std::string> names = read_strings(status, "names");
-  REQUIRE(names.size() == 17);
-  CHECK(names.back() == "outside_correction");
+  REQUIRE(names.size() == 18);
+  CHECK(names.back() == "probe_engulfed");
   for (std::size_t code = 0; code < names.size(); ++code) CHECK(names[code] == to_string(static_cast<SampleStatus>(code)));
   std::vector<std::uint64_t> index(line.samples());
   group.openDataSet("sample").read(index.data(), H5::PredType::NATIVE_UINT64);

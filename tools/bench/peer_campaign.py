@@ -45,7 +45,7 @@ from scipy import special, stats
 STATUS_NAMES = ['ok', 'invalid_input', 'lambda_not_above_one', 'beyond_membrane_limit', 'burst',
                 'no_growth', 'fit_failed', 'stiffness_at_sensor_limit', 'out_of_range', 'unstable_branch',
                 'not_converged', 'contact_lost', 'probe_beyond_mesh', 'window_not_reached', 'no_inflation_state',
-                'no_modulus_root', 'outside_correction']
+                'no_modulus_root', 'outside_correction', 'probe_engulfed']
 OK, INVALID, LAMBDA_NOT_ABOVE_ONE, BEYOND_MEMBRANE, BURST, NO_GROWTH = 0, 1, 2, 3, 4, 5
 SENSOR_LIMIT, OUT_OF_RANGE, UNSTABLE_BRANCH = 7, 8, 9
 

@@ -29,10 +29,13 @@ enum class SampleStatus : std::uint8_t {
   no_modulus_root = 15,       // no modulus gives the measured k over the force window
   // Fidelity corrected: the measurement lies outside the region the correction was fitted on.
   outside_correction = 16,
+  // The finite-element model's, appended (results.h5 stores the codes):
+  probe_engulfed = 17,        // the load steps stall with the wall wrapped round the probe to its
+                              // equator (fe::engulfed_contact_fraction, src/fe/forward.hpp)
 };
 
 // The largest code: names and counts run over 0 .. last_sample_status (HDF5 "names" attribute).
-inline constexpr SampleStatus last_sample_status = SampleStatus::outside_correction;
+inline constexpr SampleStatus last_sample_status = SampleStatus::probe_engulfed;
 
 // A set of statuses, one bit each.
 class StatusSet {
