@@ -149,10 +149,8 @@ formats = csv, hdf5
 
 [instrument]
 probe_radius_um = 0.5
-poisson_ratio = 0.2
 
 [growth]
-yield_pressure_MPa = 0
 reference_line = wild_type
 
 [line xxt1_xxt2]
