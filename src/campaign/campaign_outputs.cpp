@@ -250,6 +250,13 @@ class OutputObserver final : public RunObserver {
     if (h5_) h5_->replace_summaries(summaries_);
     write_file_atomically(in_directory(staging_, summary_csv_name), summary_csv_text(summaries_), Overwrite::allow);
     write_sensitivity(sensitivity_in_campaign_order(), shapley_, sobol_, h5_ ? &*h5_ : nullptr, staging_);
+    std::vector<std::string> measurement_error_lines;
+    for (const DataUncertainty& row : uncertainty.rows) {
+      if (row.measurement_error && std::find(measurement_error_lines.begin(), measurement_error_lines.end(), row.line) ==
+                                       measurement_error_lines.end()) {
+        measurement_error_lines.push_back(row.line);
+      }
+    }
     const std::string raw_data_report =
         write_raw_data_outputs(campaign_, summaries_, std::move(uncertainty), h5_ ? &*h5_ : nullptr, staging_);
     RunProvenance provenance = run_provenance(campaign_);
@@ -271,7 +278,7 @@ class OutputObserver final : public RunObserver {
     std::ostringstream report;
     report << "campaign '" << c.name << "': " << c.lines.size() << " lines x " << c.samples << " samples, seed " << c.seed
            << ", results in " << c.output_dir << "\n\n"
-           << format_summary_table(summaries_) << format_interval_note(c) << extra_report;
+           << format_summary_table(summaries_) << format_interval_note(c, measurement_error_lines) << extra_report;
     if (outcome.run.calibrated) {
       report << "\nkappa = " << format_double(outcome.run.kappa) << " (calibrated on " << c.reference_line
              << ": its predicted median v equals the median of its v_exp, "

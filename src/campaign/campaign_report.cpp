@@ -67,13 +67,18 @@ std::string format_summary_table(std::span<const QuantitySummary> summaries) {
   return text;
 }
 
-std::string format_interval_note(const Campaign& campaign) {
+std::string format_interval_note(const Campaign& campaign, const std::vector<std::string>& measurement_error_lines) {
   const std::size_t replicates = campaign.data_uncertainty.replicates;
   if (replicates > 0) {
+    std::string measured;
+    for (const std::string& line : measurement_error_lines) measured += (measured.empty() ? "" : ", ") + line;
+    if (!measured.empty()) {
+      measured = ", for " + measured + " including each tube's measurement error of k from its force curves";
+    }
     return "data 95 % interval: a parametric bootstrap over the tubes of the raw-data lines, " + std::to_string(replicates) +
            " replicates x " + std::to_string(data_uncertainty_samples(campaign)) +
-           " samples per line (campaigns/README.md, \"Data uncertainty\"); Monte Carlo 95 % CI: the error of this run's " +
-           std::to_string(campaign.samples) + " samples alone\n";
+           " samples per line (campaigns/README.md, \"Data uncertainty\")" + measured +
+           "; Monte Carlo 95 % CI: the error of this run's " + std::to_string(campaign.samples) + " samples alone\n";
   }
   const std::string why = has_raw_data_line(campaign) ? "[data_uncertainty] replicates = 0 switched the bootstrap off"
                                                       : "no line is given by raw data, so there is no bootstrap over tubes";

@@ -6,6 +6,7 @@
 
 #include <span>
 #include <string>
+#include <vector>
 
 #include "growthuq/campaign/campaign_file.hpp"
 #include "growthuq/evaluation/line_result.hpp"
@@ -23,8 +24,10 @@ bool data_interval_is_fixed(double low, double high);
 
 // The line under the summary table saying what its intervals are: the bootstrap that gave the
 // data intervals (`replicates` > 0), or that the intervals are Monte Carlo only, and why
-// (replicates = 0 on raw-data lines, or no raw-data line).
-std::string format_interval_note(const Campaign& campaign);
+// (replicates = 0 on raw-data lines, or no raw-data line). `measurement_error_lines`: the lines
+// whose k of force curves the bootstrap also drew within each tube's measurement uncertainty
+// ([force_curves] measurement_error = bootstrap): the note says their intervals include it.
+std::string format_interval_note(const Campaign& campaign, const std::vector<std::string>& measurement_error_lines);
 
 // "  k, d: target +0.450  achieved +0.447" for each pair with a non-zero target, then the
 // largest |achieved| over the pairs meant to be independent. Empty when fewer than two inputs.

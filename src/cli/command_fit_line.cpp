@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "growthuq/campaign/progress.hpp"
 #include "commands.hpp"
+#include "curve_fit_progress.hpp"
 #include "growthuq/campaign/progress_mode.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
@@ -58,14 +58,7 @@ int run_fit_line(const Arguments& arguments) {
   // wait, as in a campaign's run and check (campaign/shared_raw_fits.cpp).
   const ProgressMode mode = choose_progress_mode(quiet);
   settings.fit_curves = [mode](const std::vector<RelaxationCurve>& curves, const RelaxationOptions& options) {
-    StepProgress shown(mode, std::cerr, "fitting relaxation curves", "curve", curves.size());
-    std::vector<CurveFit> fits;
-    for (const RelaxationCurve& curve : curves) {
-      fits.push_back(analyze_relaxation_curve(curve, options));
-      shown.advance(1);
-    }
-    shown.finish();
-    return fits;
+    return fit_curves_showing_progress(curves, options, mode);
   };
   const RawLineFit fit = fit_raw_line(read_raw_line_file(raw_path), settings);
   std::ostream& report = report_stream(out);

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "curve_fit_progress.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
@@ -33,6 +34,7 @@ struct RelaxOptions {
   Instrument instrument;  // no probe radius unless --rho-um: the tube sheet's rho_um column then
   RelaxationOptions analysis;
   Overwrite overwrite = Overwrite::refuse;
+  bool quiet = false;
 };
 
 RelaxOptions parse(const Arguments& arguments, bool& run) {
@@ -54,14 +56,15 @@ RelaxOptions parse(const Arguments& arguments, bool& run) {
       ("nu", po::value(&nu)->default_value(nu), "Poisson ratio of the wall")
       ("fit-distributions", po::value(&options.distributions_out),
        "write [tau] (lognormal) and [einf] (beta) line-file sections fitted to the ok curves (- for standard output)")
-      ("force", "overwrite existing outputs");
+      ("force", "overwrite existing outputs")
+      ("quiet", po::bool_switch(&options.quiet), "no progress on stderr (the curve fits, seconds)");
   po::positional_options_description positional;
   positional.add("curves", 1);
   po::variables_map values;
   run = parse_arguments(arguments, "relax", "CURVES.csv --out FITS.csv [options]",
                         "Fits a generalized Maxwell (Prony) series to every force-relaxation curve and derives\n"
                         "tau_slow, E_inf/E_r(0), E0 = (1 - E_inf/E_r(0)) E_r(0) and the wall viscosity\n"
-                        "eta = tau_slow E0.",
+                        "eta = tau_slow E0. The fits' progress goes to stderr (--quiet: none).",
                         described, positional, values);
   if (!run) return options;
   const int terms = options.analysis.terms;
@@ -188,8 +191,8 @@ int run_relax(const Arguments& arguments) {
   if (!options.distributions_out.empty()) check_result_target(options.distributions_out, options.overwrite);
 
   const std::vector<RelaxationCurve> curves = read_relaxation_curves(options.curves, options.meta, given_probe_radius_m(options.instrument));
-  std::vector<CurveFit> fits;
-  for (const RelaxationCurve& curve : curves) fits.push_back(analyze_relaxation_curve(curve, options.analysis));
+  const std::vector<CurveFit> fits =
+      fit_curves_showing_progress(curves, options.analysis, choose_progress_mode(options.quiet));
 
   const std::string distributions =
       options.distributions_out.empty() ? std::string() : distributions_text(fits, options.curves);

@@ -6,11 +6,13 @@
 //   - with measurement_error = none the data interval is the plain bootstrap's, bit for bit: the
 //     same as a line whose k is a column holding the same per-tube values;
 //   - with measurement_error = bootstrap on noisy curves (u comparable to the tubes' spread) the
-//     interval widens, and the bootstrap says the interval includes measurement error.
+//     interval widens, and the bootstrap says the interval includes measurement error;
+//   - `growthuq run` says so under its summary, for the lines it concerns.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -24,11 +26,15 @@
 #include "growthuq/forcecurves/force_curve.hpp"
 #include "growthuq/forcecurves/tube_stiffness.hpp"
 #include "growthuq/synthetic/indentation_curve.hpp"
+#include "support/cli_run.hpp"
 #include "support/scratch_directory.hpp"
 #include "support/text_file.hpp"
 
 using namespace growthuq;
+using growthuq::testing::CliOutcome;
+using growthuq::testing::run_cli;
 using growthuq::testing::ScratchDirectory;
+using growthuq::testing::slurp;
 using growthuq::testing::spit;
 
 namespace {
@@ -206,4 +212,50 @@ TEST_CASE("measurement error: the bootstrap's sources say the interval includes 
     CHECK(message.find("'yes'") != std::string::npos);
     CHECK(message.find("bootstrap or none") != std::string::npos);
   }
+}
+
+TEST_CASE("the line under the summary names the lines whose data intervals include the force curves' measurement error") {
+  // Two copies of the shipped wild type's raw data: k from its force curves with measurement_error
+  // = bootstrap (the default) and = none. Only the first line's interval includes the error.
+  const ScratchDirectory scratch("summary_measurement_error");
+  const std::string folder = std::string(GROWTHUQ_SOURCE_DIR) + "/distributions/example_raw/wild_type/";
+  const std::string shipped = slurp(folder + "raw.ini");
+  for (const std::string& name : {"with_error", "without_error"}) {
+    std::string text;
+    std::istringstream lines(shipped);
+    for (std::string line; std::getline(lines, line);) {
+      // The tables named by absolute paths, so the copy can live in the scratch folder.
+      for (const std::string key : {"file = ", "curves = ", "sheet = ", "meta = "}) {
+        if (line.rfind(key, 0) == 0) line = key + folder + line.substr(key.size());
+      }
+      if (line == "name = wild_type") line = "name = " + name;
+      text += line + "\n";
+      if (line == "[force_curves]" && name == std::string("without_error")) text += "measurement_error = none\n";
+    }
+    spit(scratch.root / (name + std::string(".ini")), text);
+  }
+  spit(scratch.root / "campaign.ini",
+       "[campaign]\nname = measured\nseed = 5\nsamples = 60\noutputs = p, E\noutput_dir = out\nformats = csv\n"
+       "[instrument]\nprobe_radius_um = 0.5\n[data_uncertainty]\nreplicates = 4\nsamples = 60\n"
+       "[line with_error]\nraw = with_error.ini\n[line without_error]\nraw = without_error.ini\n");
+  const CliOutcome run = run_cli("run campaign.ini --quiet --summary-only", scratch.root);
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  CHECK(run.out.find("\ndata 95 % interval: a parametric bootstrap over the tubes of the raw-data lines, 4 replicates x 60 samples per "
+                     "line (campaigns/README.md, \"Data uncertainty\"), for with_error including each tube's measurement error of k "
+                     "from its force curves; Monte Carlo 95 % CI: the error of this run's 60 samples alone\n") != std::string::npos);
+  // data_uncertainty.csv says the same per row.
+  const std::string table = slurp(scratch.root / "out" / "data_uncertainty.csv");
+  CHECK(table.find("\nwith_error,p,") != std::string::npos);
+  std::istringstream rows(table);
+  std::string row;
+  std::getline(rows, row);
+  std::size_t included = 0, none = 0;
+  while (std::getline(rows, row)) {
+    const bool with_error = row.rfind("with_error,", 0) == 0;
+    CHECK(row.ends_with(with_error ? ",included" : ",none"));
+    ++(with_error ? included : none);
+  }
+  CHECK(included == 2);
+  CHECK(none == 2);
 }

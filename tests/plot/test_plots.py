@@ -811,6 +811,13 @@ class PrincipalComponents(unittest.TestCase):
         self.assertEqual(len(figure.axes), len(Shared.reference.lines))
 
 
+# The symbol a reader knows for each dataset name of the sensitivity table (einf in the line
+# files' unit, %, although the sampled column is einf_frac).
+SYMBOLS = {"k_N_per_m": "k", "h_nm": "h", "d_um": "d", "d0_um": "d0", "tau_s": "tau", "einf_pct": "einf",
+           "einf_frac": "einf", "v_exp_um_per_s": "v_exp", "p_MPa": "p", "E_MPa": "E", "eta_MPa_s": "eta",
+           "v_um_per_s": "v"}
+
+
 class Sensitivity(unittest.TestCase):
 
     def test_bars_and_intervals_are_the_stored_indices(self):
@@ -822,6 +829,11 @@ class Sensitivity(unittest.TestCase):
             line, output, input_ = (as_text(row[name]) for name in ("line", "output", "input"))
             bar = one(figure, f"{line}/{output}/{input_}")
             self.assertTrue(close([bar.get_width()], [row["index"]]))
+            # The bar's row is labelled with the symbols, "p ← k", not the dataset names p_MPa, k_N_per_m.
+            ax = bar.axes
+            labels = {round(y): label.get_text() for y, label in zip(ax.get_yticks(), ax.get_yticklabels())}
+            self.assertEqual(labels[round(bar.get_y() + bar.get_height() / 2)],
+                             f"{SYMBOLS[output]} ← {SYMBOLS[input_]}")
         self.assertEqual(len(figure.axes), len(Shared.reference.lines))
 
 
@@ -837,8 +849,8 @@ def add_relaxation_fixture(path, rng):
     """FIXTURE, not engine output: /lines/<line>/relaxation in the documented layout, for two
     lines - wild_type with a compound fit table (5 curves, 4 ok), pme48 with column datasets and a
     coded status (2 curves, 1 ok) - points in shuffled order, the ramp at t <= 0 without a fit.
-    Returns {line: [(name, status, t, F, F_fit)]} as written."""
-    written = {}
+    Returns {line: [(name, status, t, F, F_fit)]} and {curve name: (tau_fast_s, tau_slow_s)} as written."""
+    written, times_of = {}, {}
     t = np.concatenate([np.linspace(-0.05, 0, 6), np.geomspace(0.01, 5.0, 120)])
     with h5py.File(path, "a") as h5:
         for line, statuses, layout in (("wild_type", ["ok", "ok", "fit_failed", "ok", "ok"], "compound"),
@@ -856,6 +868,7 @@ def add_relaxation_fixture(path, rng):
                 forces.append(measured)
                 fits.append(fit)
                 taus.append((tau_fast, tau_slow, einf))
+                times_of[name] = (tau_fast, tau_slow)
             order = rng.permutation(len(index))
             group = h5.create_group(f"lines/{line}/relaxation")
             points = group.create_group("points")
@@ -879,7 +892,7 @@ def add_relaxation_fixture(path, rng):
                 group["tau_slow_s"] = np.array([x[1] for x in taus])
                 group["einf_frac"] = np.array([x[2] for x in taus])
             written[line] = curves
-    return written
+    return written, times_of
 
 
 TRADE_HEADER = ("fidelity,samples,seconds,line,quantity,unit,n,median,iqr,median_ci_low,"
@@ -920,7 +933,7 @@ class RelaxationAndTrade(unittest.TestCase):
         cls.directory = Shared.tmp / "with-fixtures"
         cls.directory.mkdir()
         shutil.copy(Shared.results_dir / "results.h5", cls.directory)
-        cls.curves = add_relaxation_fixture(cls.directory / "results.h5", rng)
+        cls.curves, cls.relaxation_times = add_relaxation_fixture(cls.directory / "results.h5", rng)
         cls.trade = run_real_tradeoff(cls.directory)
         cls.plot_run = plot_command(cls.directory, "--figures", "relaxation,tradeoff")
         cls.results = PLOTTING.results.read_results(cls.directory / "results.h5")
@@ -931,6 +944,9 @@ class RelaxationAndTrade(unittest.TestCase):
             assert_valid_png(self, self.directory / "plots" / f"{stem}.png")
             assert_valid_pdf(self, self.directory / "plots" / f"{stem}.pdf")
         self.assertNotIn("skipped", self.plot_run.stdout)
+
+    def test_relaxation_fits_the_page_with_text_of_6_5_pt_or_more(self):
+        assert_print_size(self, PLOTTING.relaxation.relaxation_figure(self.results), "relaxation")
 
     def test_relaxation_panels_show_the_curves_and_their_fits(self):
         figure = PLOTTING.relaxation.relaxation_figure(self.results)
@@ -944,6 +960,7 @@ class RelaxationAndTrade(unittest.TestCase):
             drawn = [l.get_gid().split("/")[1] for l in ax.lines if l.get_gid().endswith("/data")]
             self.assertEqual(drawn, [c[0] for c in expected])
             self.assertIn(f"{len(expected)} of {len(curves)} curves", ax.get_title())
+            self.assertIn(f"{sum(c[1] == 'ok' for c in curves)} fitted", ax.get_title())
             for name, status, t, measured, fit in expected:
                 data = one(figure, f"{line}/{name}/data")
                 after = t > 0
@@ -966,8 +983,13 @@ class RelaxationAndTrade(unittest.TestCase):
                 for b in range(a + 1, len(hues)):
                     self.assertGreater(np.linalg.norm(hues[a] - hues[b]), 0.3, (line, a, b))
             self.assertEqual(len({l.get_marker() for l in data}), len(data))
-            fitted_labels = [t.get_text() for t in ax.get_legend().get_texts() if "tau" in t.get_text()]
-            self.assertTrue(fitted_labels and all("tau fast" in t and ", slow " in t for t in fitted_labels))
+            # The legend's title says which time is which; each entry gives the curve's fit.
+            legend = ax.get_legend()
+            self.assertEqual(legend.get_title().get_text(), "tau: fast, slow")
+            entries = [t.get_text() for t in legend.get_texts()]
+            expected_entries = [f"{name}: {self.relaxation_times[name][0]:.2g} s, {self.relaxation_times[name][1]:.2g} s"
+                                if status == "ok" else f"{name} ({status})" for name, status, *_ in expected]
+            self.assertEqual(entries, expected_entries)
 
     def test_trade_panels_show_ci_half_widths_median_errors_the_target_and_time(self):
         rows = PLOTTING.tradeoff_data.read_tradeoff(self.directory / "tradeoff.csv")
@@ -1055,6 +1077,9 @@ class PrintSize(unittest.TestCase):
         assert_print_size(self, PLOTTING.growth_rate.growth_rate_figure(Shared.results), "growth_rate")
         for line in Shared.results.lines:
             assert_print_size(self, PLOTTING.correlogram.correlogram_figure(Shared.results, line), line.name)
+
+    def test_sensitivity_fits_the_page_with_text_of_6_5_pt_or_more(self):
+        assert_print_size(self, PLOTTING.sensitivity.sensitivity_figure(Shared.results), "sensitivity")
 
 
 if __name__ == "__main__":

@@ -136,6 +136,72 @@ def check_tables(report, run_dir):
     check("sensitivity" in report.tables, "no sensitivity table")
 
 
+# A raw-data line beside a published reference line: in every bootstrap replicate the reference's
+# v is calibrated to its published, fixed v_exp median, so its data interval has zero width but for
+# rounding (the CSV holds ends such as 0.027999999999999997 and 0.028000000000000008).
+FIXED_CAMPAIGN = """[campaign]
+name = fixed_law
+output_dir = out
+seed = 7
+samples = 40
+outputs = p, E, eta, v, v_exp
+formats = csv, hdf5
+
+[instrument]
+probe_radius_um = 0.5
+
+[growth]
+reference_line = wild_type
+
+[line xxt1_xxt2]
+raw = {source}/distributions/example_raw/xxt1_xxt2/raw.ini
+
+[line wild_type]
+distributions = {source}/distributions/wild_type.ini
+"""
+
+
+def cli_says_fixed(low, high):
+    """The CLI's rule (src/campaign/campaign_report.cpp, data_interval_is_fixed), restated here."""
+    return high - low <= 1e-12 * max(abs(low), abs(high))
+
+
+def check_fixed(cli, source, work):
+    """The report prints "fixed" exactly where the CLI's tables do, a rounded near-zero width
+    included, and the interval elsewhere."""
+    sys.path.insert(0, str(source / "tools"))
+    from reporting.tables import interval
+    check(interval("0.027999999999999997", "0.028000000000000008") == "fixed",
+          f"a width of rounding: {interval('0.027999999999999997', '0.028000000000000008')!r}")
+    check(interval("0.028", "0.028000001") == "0.028 – 0.028", "a narrow interval that is not fixed")
+    campaign = work / "fixed.ini"
+    campaign.write_text(FIXED_CAMPAIGN.format(source=source.resolve()))
+    ran = run(cli, "run", campaign, "--quiet", "--out", work / "fixed")
+    check(ran.returncode == 0, f"run of the fixed-law campaign: {ran.stderr}")
+    if ran.returncode != 0:
+        return
+    made = run(cli, "report", work / "fixed")
+    check(made.returncode == 0, f"report of the fixed-law campaign: {made.stderr}")
+    if made.returncode != 0:
+        return
+    rows = parse_report((work / "fixed" / "report.html").read_text(encoding="utf-8")).tables["summary"][1:]
+    cells = {(row[0], row[1]): row[3] for row in rows}
+    fixed = []
+    for expected in csv.DictReader(open(work / "fixed" / "summary.csv", newline="")):
+        if not expected["data_ci_low"]:
+            check(cells[expected["line"], expected["quantity"]] == "—", f"{expected['line']} {expected['quantity']}")
+            continue
+        low, high = float(expected["data_ci_low"]), float(expected["data_ci_high"])
+        cell = cells[expected["line"], expected["quantity"]]
+        if cli_says_fixed(low, high):
+            fixed.append((expected["line"], expected["quantity"]))
+            check(cell == "fixed", f"{expected['line']} {expected['quantity']} [{low!r}, {high!r}] printed {cell!r}")
+        else:
+            shown = interval_cell(cell)
+            check(close(shown[0], low) and close(shown[1], high), f"{expected['line']} {expected['quantity']}: {cell}")
+    check(("wild_type", "v") in fixed, f"the calibrated reference's v is not fixed: {fixed}")
+
+
 def check_page(text, report, provenance):
     methods = report.sections.get("methods", "")
     for expected in (f"seed {provenance['seed']}", f"{provenance['samples_per_line']} Latin hypercube samples",
@@ -185,6 +251,7 @@ def main():
         report = parse_report(text)
         check_tables(report, run_dir)
         check_page(text, report, provenance)
+        check_fixed(arguments.cli, arguments.source_dir, work)
     if failures:
         print(f"{len(failures)} checks failed", file=sys.stderr)
         return 1

@@ -33,13 +33,20 @@ CURVE_COLORS = matplotlib.colormaps["Dark2"].colors
 CURVE_MARKERS = ("o", "s", "^", "D")
 
 
+# The legend's title says which of each entry's two times is which (the entries stay short
+# enough for a third of the page's width).
+LEGEND_TITLE = "tau: fast, slow"
+# Page width (a journal's text width, 18 cm); the smallest print size of the figures' text.
+PAGE_WIDTH_IN = 7.0
+SMALL_PT = 6.5
+
+
 def _legend_text(curve):
     if curve.status not in FITTED:
         return f"{curve.name} ({curve.status})"
     if "tau_fast_s" in curve.fit and "tau_slow_s" in curve.fit:
-        extrapolated = ", extrapolated" if curve.status == "extrapolated" else ""
-        return (f"{curve.name} (tau fast {curve.fit['tau_fast_s']:.2g} s, slow {curve.fit['tau_slow_s']:.2g} s"
-                f"{extrapolated})")
+        extrapolated = " (extrap.)" if curve.status == "extrapolated" else ""
+        return f"{curve.name}: {curve.fit['tau_fast_s']:.2g} s, {curve.fit['tau_slow_s']:.2g} s{extrapolated}"
     return curve.name
 
 
@@ -59,13 +66,19 @@ def _draw_line(ax, residual_ax, line):
     ok = sum(curve.status in FITTED for curve in line.relaxation)
     ax.set_xscale("log")
     ax.tick_params(axis="x", labelbottom=False)
-    ax.set_ylabel(axis_label("F", "uN"))
+    ax.set_ylabel(axis_label("F", "uN"), fontsize=7)
     residual_ax.axhline(0, color="0.3", linewidth=0.8)
-    residual_ax.set_xlabel("t (s)")
-    residual_ax.set_ylabel(axis_label("F - F_fit", "uN"))
+    residual_ax.set_xlabel("t (s)", fontsize=7)
+    residual_ax.set_ylabel(axis_label("F - F_fit", "uN"), fontsize=7)
     residual_ax.grid(alpha=0.3, which="major")
-    ax.set_title(f"{display_name(line.name)}: {len(shown)} of {len(line.relaxation)} curves ({ok} fits ok)")
-    ax.legend(loc="upper right", frameon=False, fontsize=6.5)
+    for axis in (ax, residual_ax):
+        axis.tick_params(labelsize=SMALL_PT)
+    ax.set_title(f"{display_name(line.name)}: {len(shown)} of {len(line.relaxation)} curves,\n{ok} fitted",
+                 fontsize=8)
+    # Lower left: the decay starts at the top left and ends at the right, so that corner is empty
+    # but for the first point after the maximum (t of one sample), which the offset leaves visible.
+    ax.legend(loc="lower left", bbox_to_anchor=(0.1, 0.0), frameon=False, fontsize=SMALL_PT, title=LEGEND_TITLE,
+              title_fontproperties={"size": SMALL_PT}, handlelength=1.2, borderaxespad=0.2, labelspacing=0.25)
     ax.grid(alpha=0.3, which="major")
 
 
@@ -77,13 +90,13 @@ def relaxation_figure(results):
                             "(campaigns built from raw relaxation curves have one)")
     columns = min(3, len(lines))
     rows = math.ceil(len(lines) / columns)
-    figure = new_figure(4.0 * columns, 4.0 * rows + 0.5)
+    figure = new_figure(PAGE_WIDTH_IN, 3.1 * rows + 0.35)
     # Per line a force panel over its residual panel, sharing the time axis.
     grid = figure.add_gridspec(2 * rows, columns, height_ratios=(3, 1.2) * rows)
     for index, line in enumerate(lines):
         row, column = divmod(index, columns)
         ax = figure.add_subplot(grid[2 * row, column])
         _draw_line(ax, figure.add_subplot(grid[2 * row + 1, column], sharex=ax), line)
-    figure.suptitle(f"{results.campaign_name}: force relaxation, measured (points) and "
-                    "generalized Maxwell fit (line); t = 0 at the force maximum", fontsize=9)
+    figure.suptitle(f"{results.campaign_name}: force relaxation, measured (points) and generalized Maxwell "
+                    "fit (line); t = 0 at the force maximum", fontsize=8)
     return figure

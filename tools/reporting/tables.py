@@ -18,13 +18,20 @@ def significant(value):
     return f"{value:.4g}"
 
 
+def is_fixed(low, high):
+    """Zero width but for rounding, by the rule of the CLI's tables (data_interval_is_fixed,
+    src/campaign/campaign_report.cpp): a median the bootstrap does not move, whose replicates may
+    still differ in the last bits (0.027999999999999997 and 0.028000000000000008)."""
+    return high - low <= 1e-12 * max(abs(low), abs(high))
+
+
 def interval(low, high):
     """'low – high'; 'fixed' for a zero-width interval (a law the bootstrap held fixed: it varies
     nothing, so an interval would claim a precision the data do not give); a dash when absent."""
     low, high = number(low), number(high)
     if math.isnan(low) or math.isnan(high):
         return MISSING
-    if low == high:
+    if is_fixed(low, high):
         return "fixed"
     return f"{significant(low)} – {significant(high)}"
 
