@@ -92,7 +92,7 @@ TEST_CASE("each mistake is one error naming file and line") {
   CHECK(error_of(valid + "[sensitivity]\nmethod = jansen\n") == file + ":19: method = 'jansen': expected first_order, shapley or sobol");
   CHECK(error_of(valid + "[sensitivity]\nmethod = shapley\ninner = 1\n").starts_with(file + ":20: inner = '1': expected "));
   CHECK(error_of(valid + "[sensitivity]\nouter_draws = 5\n") == file + ":19: unknown key 'outer_draws' in [sensitivity] (allowed: method, outer, inner, permutations, variance_samples, sobol_samples)");
-  CHECK(error_of(replaced(valid, "[growth]", "[grow]")) == file + ":9: unknown section [grow] (expected [campaign], [instrument], [growth], [physics_correlation], [data_uncertainty], [shell_fe], [audit], [sensitivity] or [line NAME])");
+  CHECK(error_of(replaced(valid, "[growth]", "[grow]")) == file + ":9: unknown section [grow] (expected [campaign], [instrument], [probe_radius], [growth], [physics_correlation], [data_uncertainty], [shell_fe], [audit], [sensitivity] or [line NAME])");
   CHECK(error_of(replaced(valid, "reference_line = wt\n", "")) == file + ": output v needs [growth] reference_line: the line whose experimental growth rate calibrates kappa");
   CHECK(error_of(replaced(valid, "[instrument]\nprobe_radius_um = 0.5\n", "")) == file + ": no [instrument] section: probe_radius_um is required (it dominates turgor)");
   CHECK(error_of(valid + "[physics_correlation]\np_MPa = 0.8:0.1\n") == file + ":19: p_MPa = '0.8:0.1': expected a range 'low:high' with 0 < low < high");

@@ -155,7 +155,9 @@ TEST_CASE("the probe radius is given once, as a value or a law whose every draw 
                                        "source = the range the study's driver admits\n", ""), file) ==
         file + ": [instrument] probe_radius_um is required (it dominates turgor), or a [probe_radius] section with a "
                "law of it where the study does not know it");
-  CHECK(parse_error(replaced(with_law, "unit = um\n", "unit = um\ntubes = 12\n"), file) ==
+  CHECK(parse_error(replaced(with_law, "law = uniform\nlower = 0.25\nupper = 1.7\nunit = um\n",
+                             "law = lognormal\nmedian = 0.7\niqr = 0.3\nunit = um\ntubes = 12\n"),
+                    file) ==
         file + ":15: tubes = '12': expected no tubes key: a law of the probe radius is no fit to tubes, and stays fixed "
                "in the data bootstrap");
   const std::string negative = parse_error(
