@@ -8,7 +8,11 @@
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/core/units.hpp"
+#include "growthuq/distributions/distribution.hpp"
+#include "growthuq/distributions/sampled_range.hpp"
+#include "growthuq/mechanics/probe_radius_column.hpp"
 #include "campaign/sensitivity_settings.hpp"
+#include "distributions/law_section.hpp"
 #include "io/ini.hpp"
 #include "growthuq/io/read_text_file.hpp"
 
@@ -191,11 +195,36 @@ void read_instrument_section(const IniDocument& document, const IniSection& sect
     return found ? InstrumentEntry{found->value, reader.location(*found), found->key}
                  : InstrumentEntry{std::nullopt, "", std::move(key)};
   };
-  const IniEntry& rho = reader.required("probe_radius_um");
-  campaign.instrument = parse_instrument({entry(&rho, "probe_radius_um"), entry(reader.optional("poisson_ratio"), "poisson_ratio"),
+  // Optional here: a [probe_radius] law may give it instead (checked with every section read).
+  campaign.instrument = parse_instrument({entry(reader.optional("probe_radius_um"), "probe_radius_um"),
+                                          entry(reader.optional("poisson_ratio"), "poisson_ratio"),
                                           entry(reader.optional("sensor_stiffness_N_per_m"), "sensor_stiffness_N_per_m")},
-                                         ProbeRadius::required);
+                                         ProbeRadius::optional);
   reader.reject_unknown_keys("probe_radius_um, poisson_ratio, sensor_stiffness_N_per_m");
+}
+
+// [probe_radius]: a law of the probe radius, for a study that does not know it (the shipped
+// study's: campaigns/README.md, "An unknown probe radius"). Each sample draws its own rho, an
+// uncertain input like the tubes' measurements, so its share of the outputs' spread shows in the
+// intervals and the sensitivity; the keys are a line file's (distributions/README.md).
+void read_probe_radius_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
+  LineVariable law = detail::read_law_section(document, section, probe_radius_column);
+  if (const IniEntry* tubes = section.find("tubes")) {
+    throw_bad_value(document.location(tubes->line), tubes->key, tubes->value,
+                    "no tubes key: a law of the probe radius is no fit to tubes, and stays fixed in the data bootstrap");
+  }
+  for (const double probability : {lowest_drawn_probability, highest_drawn_probability}) {
+    const double rho = quantile(law.distribution, probability) * law.unit->to_si;
+    if (!in_instrument_range(InstrumentField::probe_radius, rho)) {
+      throw InputError(document.location(section.line),
+                       "[probe_radius] law " + describe(law.distribution) + " in " + std::string(law.unit->symbol) +
+                           ": its quantile at probability " + format_double(probability) + " is " +
+                           format_double(rho / unit_factor::um) + " um: expected a law whose every drawn radius is " +
+                           std::string(instrument_range(InstrumentField::probe_radius)) +
+                           " (e.g. uniform, lognormal, or a truncated_normal with lower > 0)");
+    }
+  }
+  campaign.probe_radius_law = std::move(law);
 }
 
 void read_growth_section(const IniDocument& document, const IniSection& section, Campaign& campaign) {
@@ -332,6 +361,31 @@ OutputFormats parse_formats(std::string_view text, std::string_view location, st
   return formats;
 }
 
+namespace {
+
+// The probe radius once: [instrument] probe_radius_um (a known radius) or a [probe_radius] law.
+// With a law the models read rho per sample, and the instrument's one value is the law's median.
+void use_probe_radius_law(Campaign& campaign) {
+  const bool has_radius = std::isfinite(campaign.instrument.probe_radius_m);
+  if (!campaign.probe_radius_law) {
+    if (!has_radius) {
+      throw InputError(campaign.path, "[instrument] probe_radius_um is required (it dominates turgor), or a [probe_radius] "
+                                      "section with a law of it where the study does not know it");
+    }
+    return;
+  }
+  if (has_radius) {
+    throw InputError(file_location(campaign.path, campaign.probe_radius_law->line),
+                     "[probe_radius] and [instrument] probe_radius_um both give the probe radius: expected one of them "
+                     "(the law for an unknown radius, the key for a known one)");
+  }
+  const LineVariable& law = *campaign.probe_radius_law;
+  campaign.instrument.probe_radius_m = quantile(law.distribution, 0.5) * law.unit->to_si;
+  campaign.instrument.probe_radius_per_sample = true;
+}
+
+}  // namespace
+
 Campaign parse_campaign(const std::string& text, const std::string& path) {
   const IniDocument document = parse_ini(text, path);
   Campaign campaign;
@@ -346,6 +400,8 @@ Campaign parse_campaign(const std::string& text, const std::string& path) {
     } else if (section.name == "instrument") {
       read_instrument_section(document, section, campaign);
       has_instrument = true;
+    } else if (section.name == "probe_radius") {
+      read_probe_radius_section(document, section, campaign);
     } else if (section.name == "growth") {
       read_growth_section(document, section, campaign);
     } else if (section.name == "physics_correlation") {
@@ -363,12 +419,16 @@ Campaign parse_campaign(const std::string& text, const std::string& path) {
     } else {
       throw InputError(document.location(section.line),
                        "unknown section [" + section.name +
-                           "] (expected [campaign], [instrument], [growth], [physics_correlation], [data_uncertainty], "
+                           "] (expected [campaign], [instrument], [probe_radius], [growth], [physics_correlation], "
+                           "[data_uncertainty], "
                            "[shell_fe], [audit], [sensitivity] or [line NAME])");
     }
   }
   if (!has_campaign) throw InputError(path, "no [campaign] section (name, seed, samples, outputs, output_dir)");
-  if (!has_instrument) throw InputError(path, "no [instrument] section: probe_radius_um is required (it dominates turgor)");
+  if (!has_instrument && !campaign.probe_radius_law) {
+    throw InputError(path, "no [instrument] section: probe_radius_um is required (it dominates turgor)");
+  }
+  use_probe_radius_law(campaign);
   campaign.validate();
   // [data_uncertainty] without a line it can resample (raw data, or a law stating tubes) is
   // refused by PreparedCampaign, which reads the line files; the default replicates apply only

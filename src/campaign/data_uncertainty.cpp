@@ -15,6 +15,7 @@
 #include "growthuq/core/large_vector.hpp"
 #include "growthuq/core/units.hpp"
 #include "growthuq/growth/kappa.hpp"
+#include "growthuq/mechanics/probe_radius_column.hpp"
 #include "growthuq/rawdata/raw_line_fit.hpp"
 #include "growthuq/sampling/random_stream.hpp"
 #include "growthuq/stats/quantity_summary.hpp"
@@ -42,6 +43,8 @@ LineDistributions with_laws(const LineDistributions& design_variables, const Lin
   LineDistributions result = design_variables;
   for (LineVariable& variable : result.variables) {
     const LineVariable* refitted = laws.find(variable.name);
+    // A law of the probe radius is the instrument's, not the tubes': no replicate moves it.
+    if (refitted == nullptr && variable.name == probe_radius_column) continue;
     if (refitted == nullptr) throw std::logic_error("refitted line lacks " + variable.name);
     variable.unit = refitted->unit;
     variable.distribution = refitted->distribution;

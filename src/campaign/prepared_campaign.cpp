@@ -98,6 +98,8 @@ PreparedCampaign::PreparedCampaign(Campaign campaign, Pool* pool, ProgressMode p
     line.campaign_line = campaign_line;
     const CurveFitter fit_curves = pool != nullptr ? shared_curve_fitter(*pool, campaign_line.name, progress, *log) : CurveFitter();
     line.distributions = load_line_distributions(campaign_line, campaign_.instrument, line.raw_fit, fit_curves);
+    // A law of the probe radius ([probe_radius]) is one more input of every line.
+    if (campaign_.probe_radius_law) line.distributions.variables.push_back(*campaign_.probe_radius_law);
     require_sensor_stiffer_than_line(line.distributions, campaign_.instrument, file_location(campaign_.path, campaign_line.line));
     if (line.raw_fit) require_force_curves_match(*line.raw_fit, campaign_, fidelity, file_location(campaign_.path, campaign_line.line));
     const std::vector<std::string> inputs = variable_names(line.distributions);

@@ -148,6 +148,9 @@ RunProvenance run_provenance(const PreparedCampaign& prepared) {
   provenance.samples_per_line = campaign.samples;
   provenance.outputs = campaign.outputs;
   provenance.probe_radius_um = to_um(campaign.instrument.probe_radius_m);
+  if (const std::optional<LineVariable>& law = campaign.probe_radius_law) {
+    provenance.probe_radius_law = describe(law->distribution) + " " + std::string(law->unit->symbol);
+  }
   provenance.poisson_ratio = campaign.instrument.poisson_ratio;
   provenance.sensor_stiffness_N_per_m = campaign.instrument.sensor_stiffness_N_per_m;
   provenance.yield_pressure_MPa = campaign.yield_pressure * unit_factor::per_MPa;
@@ -211,6 +214,7 @@ std::string provenance_json(const RunProvenance& p) {
   for (std::size_t i = 0; i < p.outputs.size(); ++i) out << (i ? ", " : "") << quoted(p.outputs[i]);
   out << "],\n"
       << "  \"probe_radius_um\": " << number(p.probe_radius_um) << ",\n"
+      << "  \"probe_radius_law\": " << quoted(p.probe_radius_law) << ",\n"
       << "  \"poisson_ratio\": " << number(p.poisson_ratio) << ",\n"
       << "  \"sensor_stiffness_N_per_m\": " << number(p.sensor_stiffness_N_per_m) << ",\n"
       << "  \"yield_pressure_MPa\": " << number(p.yield_pressure_MPa) << ",\n"
@@ -261,6 +265,7 @@ void write_provenance(ResultsH5Writer& h5, const RunProvenance& p) {
   h5.write_attribute(group, "samples_per_line", p.samples_per_line);
   h5.write_attribute(group, "outputs", comma_separated(p.outputs));
   h5.write_attribute(group, "probe_radius_um", p.probe_radius_um);
+  h5.write_attribute(group, "probe_radius_law", p.probe_radius_law);
   h5.write_attribute(group, "poisson_ratio", p.poisson_ratio);
   h5.write_attribute(group, "sensor_stiffness_N_per_m", p.sensor_stiffness_N_per_m);
   h5.write_attribute(group, "yield_pressure_MPa", p.yield_pressure_MPa);

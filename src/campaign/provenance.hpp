@@ -55,6 +55,8 @@ struct RunProvenance {
   std::uint64_t samples_per_line = 0;
   std::vector<std::string> outputs;
   double probe_radius_um = 0, poisson_ratio = 0, sensor_stiffness_N_per_m = 0, yield_pressure_MPa = 0;
+  std::string probe_radius_law;                // "uniform(lower=0.25, upper=1.7) um" when drawn per sample;
+                                               // probe_radius_um is then its median. Empty otherwise.
   std::string reference_line;                  // empty when kappa is not calibrated
   std::uint64_t data_interval_replicates = 0;  // the bootstrap's; 0: no data intervals
   std::uint64_t data_interval_samples = 0;     // samples per line and replicate (0 without)

@@ -37,6 +37,7 @@ constexpr std::array quantities{
     Quantity{"tau", Dimension::time, "s", "slow relaxation time"},
     Quantity{"einf", Dimension::fraction, "frac", "rescaled equilibrium modulus E_inf/E_r(0)"},
     Quantity{"v_exp", Dimension::velocity, "um/s", "experimental growth rate"},
+    Quantity{"rho", Dimension::length, "um", "probe radius"},
     Quantity{"p", Dimension::pressure, "MPa", "turgor pressure"},
     Quantity{"E", Dimension::pressure, "MPa", "wall elastic modulus"},
     Quantity{"eta", Dimension::viscosity, "MPa s", "wall viscosity"},

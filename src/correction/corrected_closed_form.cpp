@@ -149,6 +149,7 @@ void CorrectedTurgorModulus::evaluate(SampleBlock& block) const {
   const std::span<const double> h = std::as_const(block).column("h");
   const std::span<const double> strain =
       block.has("hoop_strain") ? std::as_const(block).column("hoop_strain") : std::span<const double>();
+  const SampleInstruments instruments(block, instrument_);
   const std::span<double> p = block.add_column("p");
   const std::span<double> E = block.add_column("E");
   const std::span<SampleStatus> status = block.status();
@@ -159,7 +160,7 @@ void CorrectedTurgorModulus::evaluate(SampleBlock& block) const {
       status[i] = SampleStatus::invalid_input;
       continue;
     }
-    const CorrectedInverse result = corrected_inverse(k[i], diameters, h[i], instrument_, correction_);
+    const CorrectedInverse result = corrected_inverse(k[i], diameters, h[i], instruments[i], correction_);
     if (result.status != SampleStatus::ok) {
       status[i] = result.status;
       continue;

@@ -17,6 +17,7 @@
 #include "growthuq/core/numbers.hpp"
 #include "growthuq/distributions/fit.hpp"
 #include "growthuq/distributions/sampled_range.hpp"
+#include "distributions/law_section.hpp"
 #include "io/ini.hpp"
 #include "io/ini_checks.hpp"
 
@@ -181,14 +182,11 @@ std::size_t tubes_of(const IniDocument& document, const IniSection& section, con
   return tubes;
 }
 
-LineVariable read_variable(const IniDocument& document, const IniSection& section) {
+}  // namespace
+
+LineVariable detail::read_law_section(const IniDocument& document, const IniSection& section, std::string_view name) {
   const std::string section_location = document.location(section.line);
-  if (std::find(measured_variables.begin(), measured_variables.end(), section.name) == measured_variables.end()) {
-    throw InputError(section_location, "unknown variable [" + section.name +
-                                           "]: expected [line] or one of the measured variables " +
-                                           joined(measured_variables));
-  }
-  const Quantity& quantity = *find_quantity(section.name);
+  const Quantity& quantity = *find_quantity(name);
 
   const IniEntry& law_entry = required_entry(document, section, "law", "law = " + joined(std::vector<std::string_view>{
       "lognormal", "normal", "truncated_normal", "uniform", "gamma", "weibull", "beta", "empirical"}));
@@ -240,8 +238,19 @@ LineVariable read_variable(const IniDocument& document, const IniSection& sectio
                                            " is not positive: expected a law of positive values for " + section.name +
                                            ", the " + std::string(quantity.description));
   }
-  return LineVariable{section.name, &unit, std::move(distribution), source, note ? note->value : std::string(),
+  return LineVariable{std::string(name), &unit, std::move(distribution), source, note ? note->value : std::string(),
                       section.line, tubes_of(document, section, law_entry)};
+}
+
+namespace {
+
+LineVariable read_variable(const IniDocument& document, const IniSection& section) {
+  if (std::find(measured_variables.begin(), measured_variables.end(), section.name) == measured_variables.end()) {
+    throw InputError(document.location(section.line), "unknown variable [" + section.name +
+                                                          "]: expected [line] or one of the measured variables " +
+                                                          joined(measured_variables));
+  }
+  return detail::read_law_section(document, section, section.name);
 }
 
 }  // namespace

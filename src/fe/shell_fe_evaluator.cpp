@@ -31,6 +31,7 @@ void ShellFeTurgorModulus::evaluate(SampleBlock& block) const {
   const std::span<const double> d = std::as_const(block).column("d");
   const std::span<const double> d0 = std::as_const(block).column("d0");
   const std::span<const double> h = std::as_const(block).column("h");
+  const SampleInstruments instruments(block, instrument_);
   const std::span<double> p = block.add_column("p");
   const std::span<double> E = block.add_column("E");
   const std::span<double> h0 =
@@ -38,7 +39,7 @@ void ShellFeTurgorModulus::evaluate(SampleBlock& block) const {
   const std::span<SampleStatus> status = block.status();
   for (std::size_t i = 0; i < block.size(); ++i) {
     if (status[i] != SampleStatus::ok) continue;
-    const ShellFeInverse inverse = invert_indentation({k[i], h[i], d[i], d0[i]}, instrument_, options_);
+    const ShellFeInverse inverse = invert_indentation({k[i], h[i], d[i], d0[i]}, instruments[i], options_);
     if (inverse.status != SampleStatus::ok) {
       status[i] = inverse.status;
       continue;

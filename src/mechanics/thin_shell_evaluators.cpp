@@ -39,6 +39,7 @@ void ThinShellTurgor::evaluate(SampleBlock& block) const {
   const std::span<const double> d = std::as_const(block).column("d");
   const std::span<const double> d0 = std::as_const(block).column("d0");
   const std::span<const double> strain = strain_column(block);
+  const SampleInstruments instruments(block, parameters_);
   const std::span<double> lambda = block.add_column("lambda");
   const std::span<double> alpha = block.add_column("alpha");
   const std::span<double> phi = block.add_column("phi");
@@ -46,7 +47,7 @@ void ThinShellTurgor::evaluate(SampleBlock& block) const {
   const std::span<SampleStatus> status = block.status();
   for (std::size_t i = 0; i < block.size(); ++i) {
     if (status[i] != SampleStatus::ok) continue;
-    const TurgorResult result = invert_turgor(k[i], diameters_of(d, d0, strain, i), parameters_);
+    const TurgorResult result = invert_turgor(k[i], diameters_of(d, d0, strain, i), instruments[i]);
     if (result.status != SampleStatus::ok) {
       status[i] = result.status;
       continue;
@@ -115,12 +116,13 @@ void ThinShellForward::evaluate(SampleBlock& block) const {
   const std::span<const double> E = std::as_const(block).column("E");
   const std::span<const double> h = std::as_const(block).column("h");
   const std::span<const double> d0 = std::as_const(block).column("d0");
+  const SampleInstruments instruments(block, parameters_);
   const std::span<double> d = block.add_column("d");
   const std::span<double> k = block.add_column("k");
   const std::span<SampleStatus> status = block.status();
   for (std::size_t i = 0; i < block.size(); ++i) {
     if (status[i] != SampleStatus::ok) continue;
-    const ForwardResult result = thin_shell_forward(p[i], E[i], h[i], d0[i], parameters_);
+    const ForwardResult result = thin_shell_forward(p[i], E[i], h[i], d0[i], instruments[i]);
     if (result.status != SampleStatus::ok) {
       status[i] = result.status;
       continue;

@@ -79,7 +79,11 @@ TEST_CASE("each mistake is one error naming file and line") {
   }
   CHECK(error_of(replaced(valid, "probe_radius_um = 0.5", "probe_radius_um = 0.5\nsensor_stiffness_N_per_m = 0")) ==
         file + ":9: sensor_stiffness_N_per_m = '0': expected a sensor stiffness in N/m, a number > 0 or inf (an ideal sensor)");
-  CHECK(error_of(replaced(valid, "probe_radius_um = 0.5", "probe_radius = 0.5")) == file + ":7: [instrument] lacks the required key 'probe_radius_um'");
+  CHECK(error_of(replaced(valid, "probe_radius_um = 0.5", "probe_radius = 0.5")) ==
+        file + ":8: unknown key 'probe_radius' in [instrument] (allowed: probe_radius_um, poisson_ratio, sensor_stiffness_N_per_m)");
+  CHECK(error_of(replaced(valid, "probe_radius_um = 0.5", "poisson_ratio = 0.2")) ==
+        file + ": [instrument] probe_radius_um is required (it dominates turgor), or a [probe_radius] section with a law of "
+               "it where the study does not know it");
   CHECK(error_of(replaced(valid, "yield_pressure_MPa = 0.1", "yield_presure_MPa = 0.1")) == file + ":10: unknown key 'yield_presure_MPa' in [growth] (allowed: yield_pressure_MPa, reference_line)");
   CHECK(error_of(replaced(valid, "lines/m1.ini", "lines/missing.ini")).starts_with(file + ":16: distributions = 'lines/missing.ini': expected an existing file"));
   CHECK(error_of(replaced(valid, "reference_line = wt", "reference_line = col0")) == file + ": [growth] reference_line = 'col0': expected one of the campaign's lines");
@@ -88,7 +92,7 @@ TEST_CASE("each mistake is one error naming file and line") {
   CHECK(error_of(valid + "[sensitivity]\nmethod = jansen\n") == file + ":19: method = 'jansen': expected first_order, shapley or sobol");
   CHECK(error_of(valid + "[sensitivity]\nmethod = shapley\ninner = 1\n").starts_with(file + ":20: inner = '1': expected "));
   CHECK(error_of(valid + "[sensitivity]\nouter_draws = 5\n") == file + ":19: unknown key 'outer_draws' in [sensitivity] (allowed: method, outer, inner, permutations, variance_samples, sobol_samples)");
-  CHECK(error_of(replaced(valid, "[growth]", "[grow]")) == file + ":9: unknown section [grow] (expected [campaign], [instrument], [growth], [physics_correlation], [data_uncertainty], [shell_fe], [audit], [sensitivity] or [line NAME])");
+  CHECK(error_of(replaced(valid, "[growth]", "[grow]")) == file + ":9: unknown section [grow] (expected [campaign], [instrument], [probe_radius], [growth], [physics_correlation], [data_uncertainty], [shell_fe], [audit], [sensitivity] or [line NAME])");
   CHECK(error_of(replaced(valid, "reference_line = wt\n", "")) == file + ": output v needs [growth] reference_line: the line whose experimental growth rate calibrates kappa");
   CHECK(error_of(replaced(valid, "[instrument]\nprobe_radius_um = 0.5\n", "")) == file + ": no [instrument] section: probe_radius_um is required (it dominates turgor)");
   CHECK(error_of(valid + "[physics_correlation]\np_MPa = 0.8:0.1\n") == file + ":19: p_MPa = '0.8:0.1': expected a range 'low:high' with 0 < low < high");

@@ -60,8 +60,12 @@ def methods_paragraph(provenance, written):
                                    "shell_fe_turgor_modulus") if name in models]
     if mechanics:
         text.append(f"Turgor and modulus were obtained from each sample's stiffness, diameters and wall thickness at "
-                    f"fidelity {fidelity_text}{cite(*mechanics)}, with a probe radius of "
-                    f"{significant(number(str(provenance['probe_radius_um'])))} µm and a Poisson ratio of "
+                    f"fidelity {fidelity_text}{cite(*mechanics)}, with " +
+                    (f"the probe radius, not known, drawn per sample from the law {provenance['probe_radius_law']} "
+                     f"(median {significant(number(str(provenance['probe_radius_um'])))} µm)"
+                     if provenance.get("probe_radius_law") else
+                     f"a probe radius of {significant(number(str(provenance['probe_radius_um'])))} µm") +
+                    f" and a Poisson ratio of "
                     f"{significant(provenance['poisson_ratio'])}" +
                     ("" if provenance.get("sensor_stiffness_N_per_m") is None else
                      f", correcting for a sensor stiffness of {significant(provenance['sensor_stiffness_N_per_m'])} N/m")

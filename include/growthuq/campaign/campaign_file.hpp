@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "growthuq/distributions/line_file.hpp"
 #include "growthuq/fe/indentation.hpp"
 #include "growthuq/mechanics/mechanical_correlation.hpp"
 #include "growthuq/mechanics/instrument.hpp"
@@ -89,6 +90,9 @@ struct Campaign {
   ShellFeOptions shell_fe;            // [shell_fe]: the finite-element model's options
   std::size_t shell_fe_chunk_size = 1;  // [shell_fe] chunk_size: samples per unit of work of shell_fe lines
   Instrument instrument;     // probe radius (required), Poisson ratio, sensor stiffness
+  // [probe_radius]: a law of rho [its unit] where the study does not know it, sampled per sample
+  // into the column "rho" of every line (instrument.probe_radius_per_sample); nothing otherwise.
+  std::optional<LineVariable> probe_radius_law;
   double yield_pressure = 0.0;        // p0 [Pa]
   std::string reference_line;         // calibrates kappa; required when v is an output
   MechanicalDrawOptions physics_correlation;  // p, E ranges and draw count for `physics` lines

@@ -25,6 +25,7 @@
 #include "growthuq/evaluation/evaluator.hpp"
 #include "growthuq/fe/indentation.hpp"
 #include "growthuq/mechanics/instrument.hpp"
+#include "growthuq/mechanics/probe_radius_column.hpp"
 #include "growthuq/mechanics/thin_shell.hpp"
 
 namespace growthuq {
@@ -89,7 +90,7 @@ class CorrectedTurgorModulus final : public Evaluator {
                          OptionNames names = OptionNames::campaign_keys,
                          const Correction& correction = shipped_correction());
   std::string_view name() const override { return "corrected_turgor_modulus"; }
-  std::vector<std::string> reads() const override { return {"k", "d", "d0", "h"}; }
+  std::vector<std::string> reads() const override { return reads_with_probe_radius({"k", "d", "d0", "h"}, instrument_); }
   std::vector<std::string> writes() const override { return {"p", "E"}; }
   void evaluate(SampleBlock& block) const override;
 

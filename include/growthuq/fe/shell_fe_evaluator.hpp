@@ -9,6 +9,7 @@
 #include "growthuq/evaluation/evaluator.hpp"
 #include "growthuq/fe/indentation.hpp"
 #include "growthuq/mechanics/instrument.hpp"
+#include "growthuq/mechanics/probe_radius_column.hpp"
 
 namespace growthuq {
 
@@ -31,7 +32,7 @@ class ShellFeTurgorModulus final : public Evaluator {
   ShellFeTurgorModulus(const Instrument& instrument, const ShellFeOptions& options, std::string_view location,
                        Outputs outputs = Outputs::turgor_modulus);
   std::string_view name() const override { return "shell_fe_turgor_modulus"; }
-  std::vector<std::string> reads() const override { return {"k", "d", "d0", "h"}; }
+  std::vector<std::string> reads() const override { return reads_with_probe_radius({"k", "d", "d0", "h"}, instrument_); }
   std::vector<std::string> writes() const override;
   double seconds_per_sample() const override { return shell_fe_seconds_per_sample(options_.mesh); }
   void evaluate(SampleBlock& block) const override;

@@ -26,6 +26,11 @@ struct Instrument {
   // Sensor stiffness k_sys [N/m] in series with the tube, > 0; +inf (an ideal sensor, no
   // series correction) by default and allowed.
   double sensor_stiffness_N_per_m = std::numeric_limits<double>::infinity();
+  // Whether the models read rho per sample from the block's column "rho" (probe_radius_column.hpp)
+  // rather than probe_radius_m: a campaign that gives a law of the probe radius ([probe_radius],
+  // campaigns/README.md) samples it as an uncertain input, probe_radius_m then holding the law's
+  // median for what needs one value (the mechanical rank correlation).
+  bool probe_radius_per_sample = false;
 };
 
 // The fields, for messages and for the one range check below.

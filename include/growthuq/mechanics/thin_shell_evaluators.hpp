@@ -17,6 +17,7 @@
 #include <string_view>
 
 #include "growthuq/evaluation/evaluator.hpp"
+#include "growthuq/mechanics/probe_radius_column.hpp"
 #include "growthuq/mechanics/thin_shell.hpp"
 
 namespace growthuq {
@@ -34,7 +35,7 @@ class ThinShellTurgor final : public Evaluator {
   // InputError (from validate, with `location`) when the parameters are invalid.
   ThinShellTurgor(const Instrument& parameters, std::string_view location);
   std::string_view name() const override { return "thin_shell_turgor"; }
-  std::vector<std::string> reads() const override { return {"k", "d", "d0"}; }
+  std::vector<std::string> reads() const override { return reads_with_probe_radius({"k", "d", "d0"}, parameters_); }
   std::vector<std::string> writes() const override { return {"lambda", "alpha", "phi", "p"}; }
   void evaluate(SampleBlock& block) const override;
 
@@ -62,7 +63,7 @@ class ThinShellForward final : public Evaluator {
  public:
   ThinShellForward(const Instrument& parameters, std::string_view location);
   std::string_view name() const override { return "thin_shell_forward"; }
-  std::vector<std::string> reads() const override { return {"p", "E", "h", "d0"}; }
+  std::vector<std::string> reads() const override { return reads_with_probe_radius({"p", "E", "h", "d0"}, parameters_); }
   std::vector<std::string> writes() const override { return {"d", "k"}; }
   void evaluate(SampleBlock& block) const override;
 
