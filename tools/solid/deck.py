@@ -21,9 +21,9 @@ class Wall:
 
 @dataclass
 class Contact:
-    method: str = "NODE TO SURFACE"      # or "SURFACE TO SURFACE"
+    method: str = "SURFACE TO SURFACE"   # or "NODE TO SURFACE"
     stiffness: float = 100.0             # penalty slope K in units of E / h0 (pressure per overclosure)
-    probe_slave: bool = False            # the probe's nodes slave to the wall's faces (solid.py)
+    probe_slave: bool = True             # the probe's faces slave to the wall's (solid.py)
     tension: float = 2.5e-3              # node to surface: sigma_inf in units of E
 
 
@@ -41,10 +41,11 @@ def element_ids(mesh):
     return numbers
 
 
-def write(path, mesh, node_sets, wall, h0, pressed, surfaces, contact, probe_move, increments=50, wall_element="C3D20"):
+def write(path, mesh, node_sets, wall, h0, pressed, surfaces, contact, probe_move, increments=50, wall_element="C3D20",
+          indent=True):
     """A deck: the mesh, `node_sets` (name -> node ids), the wall's law, the mirror and end
     conditions; step 1 inflates (turgor on face 1 of the `pressed` elements, the inner wall's), step 2
-    moves the probe's nodes by `probe_move` in -x. `surfaces`: (slave, master) pairs of
+    moves the probe's nodes by `probe_move` in -x (left out without `indent`). `surfaces`: (slave, master) pairs of
     (name, [(element id, face)])."""
     numbers = element_ids(mesh)
     out = ["*HEADING", "growthuq tools/solid: pollen tube indentation, half model", "*NODE, NSET=NALL"]
@@ -79,6 +80,10 @@ def write(path, mesh, node_sets, wall, h0, pressed, surfaces, contact, probe_mov
     out += ["*STEP, NLGEOM, INC=1000", "*STATIC", "0.25, 1.0, 1e-4, 0.5", "*DLOAD"]
     out += [f"{e}, P1, {wall.p:.10g}" for e in pressed]
     out += ["*NODE PRINT, NSET=REPORT", "U", "*END STEP"]
+    if not indent:
+        with open(path, "w") as f:
+            f.write("\n".join(out) + "\n")
+        return numbers
     first = 1.0 / increments
     out += ["*STEP, NLGEOM, INC=2000", "*STATIC", f"{first:.6g}, 1.0, {first * 1e-4:.6g}, {first:.6g}",
             # Converged on the force residual (0.5 % of the mean force, ccx's default) alone: in an
@@ -90,7 +95,9 @@ def write(path, mesh, node_sets, wall, h0, pressed, surfaces, contact, probe_mov
             # (ccx's defaults, 4 and 8, cut increments to 1/256 of the step).
             "*CONTROLS, PARAMETERS=TIME INCREMENTATION", "16, 24, 9, 200, 10, 4, , 20",
             "*BOUNDARY", f"PROBEN, 1, 1, {-probe_move:.10g}",
-            "*NODE PRINT, NSET=PROBEN, TOTALS=ONLY", "RF", "*END STEP"]
+            "*NODE PRINT, NSET=PROBEN, TOTALS=ONLY", "RF",
+            # The wall's nodes through its thickness under the probe: how much it is squeezed.
+            "*NODE PRINT, NSET=AXIS", "U", "*END STEP"]
     with open(path, "w") as f:
         f.write("\n".join(out) + "\n")
     return numbers

@@ -26,7 +26,7 @@ class Resolution:
     ratio: float = 1.4
     coarsest_angle: float = np.pi / 6
     coarsest_length: float = 8.0
-    probe_cells: int = 12      # cells over the probe's half circle at its finest
+    probe_cells: int = 24      # cells over the probe's half circle at its finest: finer than the wall's (slave side)
     element: str = "C3D20"     # or C3D20R
 
 

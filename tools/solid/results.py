@@ -25,6 +25,14 @@ def _inp(path):
     return nodes, sets, move
 
 
+def inflated_position(base, node):
+    """xyz [um] of `node` at the end of the inflation (step 1) of the run `base`.inp/.dat."""
+    nodes, _, _ = _inp(base + ".inp")
+    inflated = [b for b in read_dat(base + ".dat") if b[0] == "displacements" and b[2] <= 1.0 + 1e-9][-1]
+    row = next(r for r in inflated[3] if int(r[0]) == node)
+    return nodes[node] + row[1:4]
+
+
 def read_run(base, rho):
     """d [um], depth [um] and force [uN] arrays (from first touch) of the run `base`.inp/.dat."""
     nodes, sets, move = _inp(base + ".inp")
@@ -44,3 +52,15 @@ def read_run(base, rho):
     force = 2.0 * np.array([c[1] for c in curve])  # the half model's force, doubled
     keep = depth > 0  # the approach before first touch carries no force
     return d, np.concatenate([[0.0], depth[keep]]), np.concatenate([[0.0], force[keep]])
+
+
+def thickness_under_probe(base):
+    """The wall's current thickness under the probe's axis [um] at each increment of the
+    indentation (time > 1): the spread in x of the nodes through the wall on the probe's line."""
+    nodes, _, _ = _inp(base + ".inp")
+    out = []
+    for quantity, name, time, rows in read_dat(base + ".dat"):
+        if quantity == "displacements" and name == "AXIS" and time > 1.0:
+            x = [nodes[int(r[0])][0] + r[1] for r in rows]
+            out.append((time, max(x) - min(x)))
+    return out
