@@ -60,7 +60,11 @@ MechanicalCorrelation mechanical_rank_correlation(const MechanicalDrawOptions& o
                                                   const Instrument& shell,
                                                   std::string_view location) {
   validate(options, location);
-  const ThinShellForward forward(shell, location);
+  // The draws carry no probe radius column: a campaign's law of rho enters through its median,
+  // which the instrument holds (instrument.hpp).
+  Instrument one_radius = shell;
+  one_radius.probe_radius_per_sample = false;
+  const ThinShellForward forward(one_radius, location);
   SampleBlock block = draw_mechanical_samples(options);
   forward.evaluate(block);
 

@@ -32,14 +32,15 @@ namespace {
 
 constexpr const char* made_up = "source = illustrative\nnote = a tube made up for this test\n";
 
-// One line of turgor only, k, d and d0 on narrow uniform laws; `instrument` is the text of the
+// One line of turgor only, k, d and d0 on narrow uniform laws under the physics rank correlation
+// (drawn at one radius: the law's median); `instrument` is the text of the
 // campaign's probe radius ([instrument] and, or, [probe_radius]).
 std::string campaign_text(const fs::path& folder, const std::string& instrument) {
   std::ofstream(folder / "tube.ini") << "[line]\nname = tube\n[k]\nlaw = uniform\nlower = 1.5\nupper = 2.5\nunit = N/m\n"
                                      << made_up << "[d]\nlaw = uniform\nlower = 6.4\nupper = 6.6\nunit = um\n" << made_up
                                      << "[d0]\nlaw = uniform\nlower = 5.3\nupper = 5.4\nunit = um\n" << made_up;
   return "[campaign]\nname = rho\nseed = 5\nsamples = 200\noutputs = p\noutput_dir = " + (folder / "results").string() +
-         "\nformats = csv\n" + instrument + "[line tube]\ndistributions = tube.ini\nrank_correlation = none\n";
+         "\nformats = csv\n" + instrument + "[line tube]\ndistributions = tube.ini\nrank_correlation = physics\n";
 }
 
 constexpr const char* law_text =
