@@ -121,7 +121,7 @@ std::vector<AuditRow> CampaignAudit::run(Pool& pool, std::ostream* log, ChunkJou
   const Campaign& c = campaign_.campaign();
   const std::size_t n = c.audit.samples, m = c.samples;
   std::vector<AuditRow> rows;
-  pool.set_queued_chunks(2);  // finite-element samples, as the run hands them out (campaign_run.cpp)
+  pool.set_queued_chunks(1);  // finite-element samples, as the run hands them out (campaign_run.cpp)
   for (std::size_t audited = 0; audited < lines_.size(); ++audited) {
     const std::size_t index = lines_[audited];
     const PreparedLine& fast_line = fast_->lines()[index];

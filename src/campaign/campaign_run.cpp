@@ -150,12 +150,11 @@ class LineRun {
       }
     };
     const std::size_t chunk_size = campaign_.chunk_size_of(line);
-    // Finite-element samples take seconds to minutes. Rank 0 computes samples too and answers a
-    // worker only between its own, so a worker holding one sample would wait, idle, for rank 0's
-    // sample to end each time (measured: the second of 2 processes busy 40 % of the time); with
-    // one more queued it starts that one meanwhile. No deeper: a queued sample can no longer go
-    // to whichever process frees up first, which matters at a line's end.
-    pool_.set_queued_chunks(campaign_.has_slow_samples(line) ? 2 : 3);
+    // Finite-element samples take seconds to minutes: one at a time per worker, since rank 0
+    // answers a worker as soon as its sample is back (it computes its own on another thread), and
+    // a queued sample could no longer go to whichever process frees up first, which matters at a
+    // line's end.
+    pool_.set_queued_chunks(campaign_.has_slow_samples(line) ? 1 : 3);
     const ChunkSink computed = [&](ChunkRange range, std::span<const double> values) { fill(range, values, false); };
     const ChunkSink replayed = [&](ChunkRange range, std::span<const double> values) { fill(range, values, true); };
     run_with_journal(pool_, journal_, index, samples_, chunk_size, work, computed, replayed);

@@ -1,8 +1,10 @@
 // The MPI pool: the only file of the engine that includes mpi.h.
 //
 // Protocol (dynamic master/worker where the master also works): rank 0 keeps up to three
-// chunks assigned to every other rank, so a worker never idles waiting for the next one, and
-// computes chunks itself between serving messages. A worker answers each ASSIGN with a RESULT
+// chunks assigned to every other rank and computes chunks itself on a thread of its own, while
+// its main thread, the only one that calls MPI (MPI_THREAD_FUNNELED), answers the workers: a
+// worker gets its next chunk as soon as it returns one, however long rank 0's own chunk takes
+// (a finite-element sample takes seconds to minutes). A worker answers each ASSIGN with a RESULT
 // (chunk index + values) or a FAILURE (chunk index + reason). When everything is sunk, or after
 // the first failure, rank 0 sends STOP to every worker and drains messages until each worker
 // has said DONE, so no send is left pending (no hang at exit). A stop request (Pool::stop_when,
@@ -17,6 +19,8 @@
 #include <cstdlib>
 #include <deque>
 #include <exception>
+#include <future>
+#include <optional>
 #include <string>
 #include <thread>
 #include <utility>
@@ -80,10 +84,15 @@ class MpiPool final : public Pool {
   MpiPool() {
     int initialized = 0;
     MPI_Initialized(&initialized);
+    int threads = MPI_THREAD_SINGLE;
     if (!initialized) {
-      MPI_Init(nullptr, nullptr);
+      MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &threads);
       std::atexit(finalize_mpi);
+    } else {
+      MPI_Query_thread(&threads);
     }
+    // Without it, rank 0 computes its chunks on its main thread, between messages.
+    compute_aside_ = threads >= MPI_THREAD_FUNNELED;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
     // The processes that can share memory with this one: those on its machine.
@@ -230,6 +239,21 @@ class MpiPool final : public Pool {
       }
     };
 
+    // Rank 0's own chunk, computed on a thread of its own while this one serves the workers.
+    std::optional<ChunkRange> own;
+    std::future<std::vector<double>> own_values;
+    const auto finish_own = [&] {
+      std::vector<double> values;
+      try {
+        values = own_values.get();
+      } catch (const std::exception& error) {
+        if (failure.empty()) failure = describe_failure(0, *own, error.what());
+      }
+      if (failure.empty()) sink_safely(*own, values);
+      ++sunk;
+      own.reset();
+    };
+    long pause = 10;
     for (;;) {
       if (stop == 0) stop = stop_requested();
       // Decided once per pass: blocking below is safe only while chunks are in flight.
@@ -240,21 +264,32 @@ class MpiPool final : public Pool {
       MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &pending, &status);
       if (pending) {
         handle_message(status);
-      } else if (more) {
-        const ChunkRange range = all[todo[next++]];
-        std::vector<double> values;
-        try {
-          values = work(range);
-        } catch (const std::exception& error) {
-          failure = describe_failure(0, range, error.what());
+        pause = 10;
+      } else if (own && own_values.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+        finish_own();
+        pause = 10;
+      } else if (more && !own) {
+        own = all[todo[next++]];
+        if (compute_aside_) {
+          own_values = std::async(std::launch::async, [&work, range = *own] { return work(range); });
+        } else {
+          std::promise<std::vector<double>> computed;
+          try {
+            computed.set_value(work(*own));
+          } catch (...) {
+            computed.set_exception(std::current_exception());
+          }
+          own_values = computed.get_future();
         }
-        if (failure.empty()) sink_safely(range, values);
-        ++sunk;
+      } else if (own) {
+        pause_between_polls(pause);  // rank 0's chunk is still being computed
       } else {
         probe_gently(MPI_ANY_SOURCE, status);
         handle_message(status);
       }
     }
+    // After a failure rank 0's own chunk may still be under way: it ends before the workers stop.
+    if (own) finish_own();
 
     // Stop every worker and drain what is still in flight until each has said DONE.
     for (int worker = 1; worker < size_; ++worker) MPI_Send(nullptr, 0, MPI_CHAR, worker, stop_tag, MPI_COMM_WORLD);
@@ -340,6 +375,7 @@ class MpiPool final : public Pool {
   }
 
   std::exception_ptr sink_failure_;  // rank 0: what the sink threw in the current run()
+  bool compute_aside_ = false;       // rank 0 computes its chunks on a thread of its own
   int rank_ = 0;
   int size_ = 1;
   int local_size_ = 1;

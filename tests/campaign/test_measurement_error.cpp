@@ -220,7 +220,7 @@ TEST_CASE("the line under the summary names the lines whose data intervals inclu
   const ScratchDirectory scratch("summary_measurement_error");
   const std::string folder = std::string(GROWTHUQ_SOURCE_DIR) + "/distributions/example_raw/wild_type/";
   const std::string shipped = slurp(folder + "raw.ini");
-  for (const std::string& name : {"with_error", "without_error"}) {
+  for (const std::string name : {"with_error", "without_error"}) {
     std::string text;
     std::istringstream lines(shipped);
     for (std::string line; std::getline(lines, line);) {

@@ -1,8 +1,11 @@
 // Runs under `mpirun -np K` (CTest registers K = 1, 2, 3): the MPI pool must give results
 // bit-identical to a serial computation whatever K is, including K larger than the work, and
 // a failing chunk must stop every rank with the rank, range and reason (never hang), and a stop
-// request on the coordinator must stop every rank at the same point.
+// request on the coordinator must stop every rank at the same point, and the coordinator must
+// answer the workers while it computes a chunk of its own.
 // Exits 0 when every check holds; prints the failed check and exits 1 otherwise.
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -129,6 +132,37 @@ int main() {
     }
   } else {
     check(gathered.empty(), "gather: nothing on a process other than 0", rank);
+  }
+
+  // Rank 0 answers the workers while it computes: its first chunk of a run of one-item chunks
+  // (none queued) waits until the sink has taken 12 of the workers' chunks, which it can only if
+  // rank 0 hands out and sinks chunks meanwhile (a rank 0 that serves only between its own chunks
+  // would sink none: the wait's 30 s bound then ends it and the check fails).
+  if (pool->size() > 1) {
+    std::atomic<int> sunk_by_workers{0};
+    std::atomic<bool> own_started{false};
+    int seen_during_own = -1;
+    pool->set_queued_chunks(1);
+    pool->run(
+        40, 1,
+        [&](ChunkRange range) {
+          if (rank == 0 && !own_started.exchange(true)) {
+            const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+            while (sunk_by_workers.load() < 12 && std::chrono::steady_clock::now() < give_up) {
+              std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            }
+            seen_during_own = sunk_by_workers.load();
+          } else {
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+          }
+          return compute(range);
+        },
+        [&](ChunkRange, std::span<const double>) { ++sunk_by_workers; });
+    if (rank == 0) {
+      check(seen_during_own >= 12, "rank 0 sank the workers' chunks while computing its own (saw " +
+                                       std::to_string(seen_during_own) + " of 12)", rank);
+    }
+    pool->set_queued_chunks(3);
   }
 
   // run_items: item i is i + 1 numbers (uneven), all back on rank 0 in item order.

@@ -80,10 +80,10 @@ class Pool {
   void stop_when(std::function<int()> request) { stop_request_ = std::move(request); }
 
   // Chunks assigned to each worker at a time, the one it computes included (the MPI pool; 3 by
-  // default): rank 0 computes chunks too and answers workers only between its own, so a queue
-  // keeps a worker busy meanwhile; chunks of seconds or minutes (finite-element samples) want a
-  // short one (2), since a queued chunk can no longer go to whichever process frees up first.
-  // Every process sets the same value.
+  // default): a queue hides the round trip of a result and its next assignment behind a chunk of
+  // milliseconds; chunks of seconds or minutes (finite-element samples) want none (1), since a
+  // queued chunk can no longer go to whichever process frees up first. Rank 0 computes chunks too,
+  // on a thread of its own, and answers workers meanwhile. Every process sets the same value.
   void set_queued_chunks(int chunks) { queued_chunks_ = chunks < 1 ? 1 : chunks; }
   int queued_chunks() const { return queued_chunks_; }
 
