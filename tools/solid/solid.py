@@ -27,13 +27,22 @@ class Case:
     behind_apex: float = 10.0
 
 
-def run_ccx(deck_base, threads=1):
-    """Runs ccx on deck_base.inp in its directory; returns the wall time in s."""
+class SolidTimeout(RuntimeError):
+    """A ccx run stopped after its allotted wall time (a wall that collapses under the probe can
+    cut its increments for hours, README.md)."""
+
+
+def run_ccx(deck_base, threads=1, timeout=None):
+    """Runs ccx on deck_base.inp in its directory; returns the wall time in s. Stops it and
+    raises SolidTimeout after `timeout` s."""
     env = dict(os.environ, OMP_NUM_THREADS=str(threads), CCX_NPROC_STIFFNESS=str(threads))
     start = time.monotonic()
     folder, name = os.path.split(deck_base)
-    result = subprocess.run(["nice", "-n", "15", "ccx", "-i", name], cwd=folder or ".", env=env,
-                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    try:
+        result = subprocess.run(["nice", "-n", "15", "ccx", "-i", name], cwd=folder or ".", env=env,
+                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        raise SolidTimeout(f"ccx stopped after {timeout:.0f} s on {deck_base}.inp") from None
     with open(deck_base + ".log", "w") as f:
         f.write(result.stdout)
     if result.returncode != 0 or "*ERROR" in result.stdout:
@@ -96,7 +105,7 @@ def _experiment(case, res, contact, depth, z_ref, centre, plate_x, with_probe):
     return mesh, sets, surfaces, pressed, axis_outer
 
 
-def simulate(case, res, contact, depth, folder, increments=32, clearance=0.01, probe_clearance=0.02):
+def simulate(case, res, contact, depth, folder, increments=32, clearance=0.01, probe_clearance=0.02, timeout=None):
     """Inflation, then the probe moved `depth` [um] past first touch in -x. Two ccx runs: the
     inflation alone, which gives where the wall's finest line (under the probe) lies once
     inflated, then inflation and indentation with the probe's axis on that point,
@@ -106,7 +115,8 @@ def simulate(case, res, contact, depth, folder, increments=32, clearance=0.01, p
     indentation's first hundredth of a um, at a force of order 1e-5 uN (k without the
     substrate, src/fe/README.md), so k does not see the difference. The depth is counted from first touch, measured on the inflated wall. Returns a
     dict: turgid diameter d [um], depth and force curves [um, uN, whole tube], the window fit
-    (k [N/m] over 0.4-4 uN), the node count and the run time [s] of both runs."""
+    (k [N/m] over 0.4-4 uN), the node count and the run time [s] of both runs. Each ccx run is
+    stopped after `timeout` s (SolidTimeout)."""
     os.makedirs(folder, exist_ok=True)
     r0 = case.d0 / 2
     hoop, axial, thickness = stvk_stretches(case.p / case.E, case.h0 / case.d0, case.nu)
@@ -126,7 +136,7 @@ def simulate(case, res, contact, depth, folder, increments=32, clearance=0.01, p
     base = os.path.join(folder, "inflate")
     write(base + ".inp", mesh, sets, wall_law, case.h0, pressed, surfaces, contact, probe_move=0.0,
           wall_element=res.element, indent=False)
-    seconds = run_ccx(base)
+    seconds = run_ccx(base, timeout=timeout)
     x = inflated_position(base, axis_outer)
 
     centre = np.array([x[0] + probe_clearance + case.rho, 0.0, x[2]])
@@ -134,7 +144,7 @@ def simulate(case, res, contact, depth, folder, increments=32, clearance=0.01, p
     base = os.path.join(folder, "indent")
     write(base + ".inp", mesh, sets, wall_law, case.h0, pressed, surfaces, contact,
           probe_move=depth + probe_clearance, increments=increments, wall_element=res.element)
-    seconds += run_ccx(base)
+    seconds += run_ccx(base, timeout=timeout)
 
     d, depths, forces = read_run(base, case.rho)
     fit = fit_force_window(depths, forces, 0.4, 4.0)
