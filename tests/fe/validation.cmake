@@ -52,3 +52,9 @@ growthuq_test_timeout(test_fe_convergence_thick_wall 1800)
 growthuq_add_test(test_fe_envelope test_fe_envelope.cpp)
 set_tests_properties(test_fe_envelope PROPERTIES LABELS fe_validation)
 growthuq_test_timeout(test_fe_envelope 1800)
+
+# A probe half the tube's radius wide reaches the window on the coarse mesh; its k against the
+# penalty contact's (the test prints both).
+growthuq_add_test(test_fe_wide_probe test_fe_wide_probe.cpp)
+set_tests_properties(test_fe_wide_probe PROPERTIES LABELS fe_validation)
+growthuq_test_timeout(test_fe_wide_probe 1800)
