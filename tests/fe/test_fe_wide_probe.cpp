@@ -6,9 +6,7 @@
 
 #include <cstdio>
 
-#include "fe/force_window.hpp"
-#include "fe/forward.hpp"
-#include "fe_validation_support.hpp"
+#include "mesh_convergence.hpp"
 
 using namespace growthuq;
 
@@ -24,14 +22,7 @@ WideCurve indent_wide(ShellFeContact contact) {
   // passes the window's top (4 uN) at about 1.5 um.
   const double d0 = 5.35e-6;
   const auto point = testing::dimensionless_point(0.45e6, 45e6, 211e-9, d0, 0.25 * d0);
-  fe::ForwardProblem problem;
-  problem.pressure = point.pressure;
-  problem.thickness = point.thickness;
-  problem.probe_radius = point.probe_radius;
-  problem.tube_length = 100e-6 / d0;
-  problem.probe_distance = 10e-6 / d0;
-  problem.max_depth = 1.6e-6 / d0;
-  problem.mesh = ShellFeMesh::coarse;
+  fe::ForwardProblem problem = testing::study_tube(point, d0, 1.6e-6, ShellFeMesh::coarse);
   problem.contact = contact;
   WideCurve curve;
   curve.result = fe::simulate_forward(problem);
@@ -48,12 +39,12 @@ TEST_CASE("a probe half the tube's radius wide: the curve reaches the window, k 
   const WideCurve exact = indent_wide(ShellFeContact::active_set);
   REQUIRE(exact.result.status == SampleStatus::ok);
   REQUIRE(exact.fit.status == fe::WindowFitStatus::ok);
-  // Measured 6-9 iterations per step on this tube; before the active set's band was narrowed
-  // (forward.cpp) the steps took 15-40 and the curve stopped at 1.2 uN.
+  // Measured 163 iterations in 21 steps; with the narrow probes' band (forward.cpp) the steps
+  // took 15-40 and the curve stopped at 1.2 uN.
   CHECK(exact.result.indentation_iterations <= 12 * exact.result.load_steps);
   const WideCurve penalty = indent_wide(ShellFeContact::penalty);
   REQUIRE(penalty.fit.status == fe::WindowFitStatus::ok);
   // The penalty's compliance in series (0.27 % of k at the thick wall) and its load-path noise
-  // (0.2 %, src/fe/README.md) bound the difference well within 1 %.
-  CHECK(exact.fit.slope == doctest::Approx(penalty.fit.slope).epsilon(0.01));
+  // (0.2 %, src/fe/README.md) bound the difference by 0.5 % (measured: 2.7555 against 2.7554 N/m).
+  CHECK(exact.fit.slope == doctest::Approx(penalty.fit.slope).epsilon(0.005));
 }
