@@ -15,6 +15,11 @@
 namespace growthuq::fe {
 namespace {
 
+// The active set's band under a probe wider than the bending length (/ d0): above the gap's
+// rounding (1e-16) and the touching test (1e-12, active_set_contact.cpp), far below the patch's
+// lift-off there (src/fe/README.md, section 8).
+constexpr double wide_probe_band = 1e-9;
+
 bool finite_all(std::initializer_list<double> values) {
   return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
 }
@@ -125,11 +130,19 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
     }
     ContactOptions contact;
     contact.method = p.contact;
-    // Active set: nodes within a thin band of an obstacle may be held on it. Penalty: nodes
-    // there start a step touching it; the penalty is raised until the deepest node is within
-    // the stated bound on any node's penetration; a Newton step may not carry a node deeper than
-    // half of it (the line search sees only the energy at the step's end).
-    contact.band = 0.1 * tolerance;
+    // Active set: nodes within a band of an obstacle may be held on it (and lifted onto it),
+    // nodes further out only when the wall pushes them in further than their gap. Under a
+    // narrow probe a band of 1e-4 rho holds the nodes about to touch and saves iterations. Under
+    // a probe wider than the bending length the middle of the contact patch stands off the probe
+    // by 2e-5 to 6e-5 d0 (the membrane's tension tents it, src/fe/README.md section 8): a band of
+    // that size held and released those nodes in turn until Newton stalled, so there the band is
+    // far below any such gap. The band changes Newton's path, not the solution it converges to.
+    // Penalty: nodes in the band start a step touching the obstacle; the penalty is raised until
+    // the deepest node is within the stated bound on any node's penetration; a Newton step may
+    // not carry a node deeper than half of it (the line search sees only the energy at the
+    // step's end).
+    const bool wide_probe = p.probe_radius > bending_length(p.thickness);
+    contact.band = p.contact == ContactMethod::active_set && wide_probe ? wide_probe_band : 0.1 * tolerance;
     contact.reach = 0.25 * p.probe_radius;
     contact.penetration_tolerance = tolerance;
     contact.penetration_floor = 0.5 * tolerance;

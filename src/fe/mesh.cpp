@@ -216,8 +216,10 @@ TriangleMesh mirrored(const TriangleMesh& half) {
 
 }  // namespace
 
+double bending_length(double thickness) { return std::sqrt(thickness * 0.5); }
+
 MeshSizing mesh_sizing(ShellFeMesh level, double probe_radius, double thickness) {
-  const double bending_length = std::sqrt(thickness * 0.5);
+  const double b = bending_length(thickness);
   const double scale = level == ShellFeMesh::coarse     ? 1.0
                        : level == ShellFeMesh::standard ? std::numbers::sqrt2 / 2
                        : level == ShellFeMesh::fine     ? 0.5
@@ -228,10 +230,10 @@ MeshSizing mesh_sizing(ShellFeMesh level, double probe_radius, double thickness)
   // of it, over a fine region one bending length wide. A ramp over rho from 1 to 1.2 bending
   // lengths, not a switch, keeps the sizes continuous in the inputs; narrower probes (every
   // training tube of the corrected form) keep the sizes they had.
-  const double wide = std::clamp((probe_radius / bending_length - 1) / 0.2, 0.0, 1.0);
+  const double wide = std::clamp((probe_radius / b - 1) / 0.2, 0.0, 1.0);
   MeshSizing s;
-  s.finest = 0.5 * scale * std::min(probe_radius, bending_length * (1 - 0.875 * wide));
-  s.fine_radius = std::max(0.25 * bending_length, (1 - wide) * 2 * probe_radius + wide * bending_length);
+  s.finest = 0.5 * scale * std::min(probe_radius, b * (1 - 0.875 * wide));
+  s.fine_radius = std::max(0.25 * b, (1 - wide) * 2 * probe_radius + wide * b);
   s.grading = 0.5 * scale;
   s.coarsest = std::max(0.14 * scale, s.finest);
   return s;

@@ -31,6 +31,10 @@ struct MeshSizing {
   int max_faces = 400000;  // refusing a mesh beyond this bounds time and memory
 };
 
+// The wall's bending length sqrt(h0 R) (R = 1/2), over d0, for the thickness h0/d0: the width of
+// its bending boundary layers, and what tells a wide probe from a narrow one.
+double bending_length(double thickness);
+
 // The sizing of a level for a probe of radius rho and a wall of bending length b = sqrt(h0 R)
 // (R = 1/2): the finest size resolves the smaller of the two over a fine region 2 rho wide; a
 // probe wider than b gets cells down to b/16 over a region b wide instead (mesh.cpp says why);

@@ -20,7 +20,8 @@ struct EnvelopePoint {
   double p, young, h0, d0, rho, depth;  // SI; depth: the deepest indentation, past the window's top
 };
 
-inline double stiffness(const DimensionlessPoint& point, double d0, double depth, ShellFeMesh level, int& iterations) {
+// The study's tube (100 um long, probed 10 um behind the apex) at a point, indented to `depth` (m).
+inline fe::ForwardProblem study_tube(const DimensionlessPoint& point, double d0, double depth, ShellFeMesh level) {
   fe::ForwardProblem problem;
   problem.pressure = point.pressure;
   problem.thickness = point.thickness;
@@ -29,7 +30,11 @@ inline double stiffness(const DimensionlessPoint& point, double d0, double depth
   problem.probe_distance = 10e-6 / d0;
   problem.max_depth = depth / d0;
   problem.mesh = level;
-  const fe::ForwardResult result = fe::simulate_forward(problem);
+  return problem;
+}
+
+inline double stiffness(const DimensionlessPoint& point, double d0, double depth, ShellFeMesh level, int& iterations) {
+  const fe::ForwardResult result = fe::simulate_forward(study_tube(point, d0, depth, level));
   iterations = result.newton_iterations;
   // As indent() reads a curve: k counts if the curve got past the window's top, even when the
   // solver stopped later (measured once: the fine level stopped at 2.22 of 2.3 um, beyond the
