@@ -5,6 +5,7 @@
 // evaluator agrees with the per-tube function.
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -17,9 +18,15 @@ using namespace growthuq;
 
 namespace {
 
+const std::string source_dir = GROWTHUQ_SOURCE_DIR;
+
+// The shipped tubes, one point per tube and training window its curve reaches.
 std::vector<TrainingPoint> shipped_training() {
-  return read_training_csv(std::string(GROWTHUQ_SOURCE_DIR) + "/src/correction/training.csv");
+  return under_training_windows(read_training_csv(source_dir + "/src/correction/training.csv"),
+                                source_dir + "/src/correction/training_curves.csv");
 }
+
+constexpr std::array<double, 2> default_window{0.4e-6, 4e-6};
 
 Instrument instrument_of(const TrainingPoint& point) {
   Instrument instrument;
@@ -52,7 +59,8 @@ TEST_CASE("held-out finite-element tubes: corrected p and E within 2 %, where th
   for (const TrainingPoint& point : shipped_training()) {
     if (!in_training_envelope(point) || !held_out(point)) continue;
     const CorrectedInverse result =
-        corrected_inverse(point.k, diameters_in_si(point.d, point.d0), point.h, instrument_of(point), shipped_correction());
+        corrected_inverse(point.k, diameters_in_si(point.d, point.d0), point.h, instrument_of(point), point.window,
+                          shipped_correction());
     if (result.status == SampleStatus::outside_correction) continue;  // beyond the fitted tubes' range
     REQUIRE(result.status == SampleStatus::ok);
     ++inside;
@@ -70,11 +78,14 @@ TEST_CASE("held-out finite-element tubes: corrected p and E within 2 %, where th
 }
 
 TEST_CASE("a training row is one finite-element inverse: a held-out tube inverted by the model itself") {
-  // The first held-out tube with a value, through invert_indentation at the default mesh (the
-  // mesh the training data were made at): the forward run's p and E back within 0.3 %.
-  for (const TrainingPoint& point : shipped_training()) {
+  // The first held-out tube with a value over the default window, through invert_indentation on
+  // the coarse mesh (the mesh the training data were made on): the forward run's p and E back
+  // within 0.3 %.
+  ShellFeOptions coarse;
+  coarse.mesh = ShellFeMesh::coarse;
+  for (const TrainingPoint& point : read_training_csv(source_dir + "/src/correction/training.csv")) {
     if (!point.ok || !held_out(point)) continue;
-    const ShellFeInverse inverse = invert_indentation({point.k, point.h, point.d, point.d0}, instrument_of(point), ShellFeOptions{});
+    const ShellFeInverse inverse = invert_indentation({point.k, point.h, point.d, point.d0}, instrument_of(point), coarse);
     REQUIRE(inverse.status == SampleStatus::ok);
     CHECK(inverse.pressure == doctest::Approx(point.p).epsilon(3e-3));
     CHECK(inverse.young == doctest::Approx(point.E).epsilon(3e-3));
@@ -91,35 +102,35 @@ TEST_CASE("outside the fitted range no value; the closed form's statuses pass th
   // A tube in the middle of the range: a value.
   const TubeDiameters middle = diameters_in_si(1.18 * d0, d0);
   const double k = 3.0;
-  const CorrectedInverse ok = corrected_inverse(k, middle, h, instrument, correction);
+  const CorrectedInverse ok = corrected_inverse(k, middle, h, instrument, default_window, correction);
   REQUIRE(ok.status == SampleStatus::ok);
   CHECK(ok.p > 0);
   // Each group pushed beyond its range: outside_correction, NaN values.
-  CHECK(corrected_inverse(k, diameters_in_si(1.9 * d0, d0), h, instrument, correction).status == SampleStatus::outside_correction);
-  CHECK(corrected_inverse(k, middle, 20e-9, instrument, correction).status == SampleStatus::outside_correction);
-  CHECK(corrected_inverse(1000.0, middle, h, instrument, correction).status == SampleStatus::outside_correction);
+  CHECK(corrected_inverse(k, diameters_in_si(1.9 * d0, d0), h, instrument, default_window, correction).status == SampleStatus::outside_correction);
+  CHECK(corrected_inverse(k, middle, 20e-9, instrument, default_window, correction).status == SampleStatus::outside_correction);
+  CHECK(corrected_inverse(1000.0, middle, h, instrument, default_window, correction).status == SampleStatus::outside_correction);
   // Stiffer than the fitted tubes (k > 10 N/m) though every group lies inside its range: a narrow
   // tube (d0 = 4 um) at 12 N/m has w = 0.083, inside; at 9 N/m it gets a value.
   const TubeDiameters narrow = diameters_in_si(1.18 * 4e-6, 4e-6);
-  CHECK(corrected_inverse(9.0, narrow, h, instrument, correction).status == SampleStatus::ok);
-  CHECK(corrected_inverse(12.0, narrow, h, instrument, correction).status == SampleStatus::outside_correction);
+  CHECK(corrected_inverse(9.0, narrow, h, instrument, default_window, correction).status == SampleStatus::ok);
+  CHECK(corrected_inverse(12.0, narrow, h, instrument, default_window, correction).status == SampleStatus::outside_correction);
   // A probe wider than the bending length sqrt(h d0 / 2) = 0.69 um, though every group lies inside
   // its range (rho/d0 0.13, h/d0 0.034): no training tube had one.
   Instrument wide_probe = instrument;
   wide_probe.probe_radius_m = 0.67e-6;
-  CHECK(corrected_inverse(k, middle, h, wide_probe, correction).status == SampleStatus::ok);
+  CHECK(corrected_inverse(k, middle, h, wide_probe, default_window, correction).status == SampleStatus::ok);
   wide_probe.probe_radius_m = 0.71e-6;
-  CHECK(corrected_inverse(k, middle, h, wide_probe, correction).status == SampleStatus::outside_correction);
+  CHECK(corrected_inverse(k, middle, h, wide_probe, default_window, correction).status == SampleStatus::outside_correction);
   Instrument big_probe = instrument;
   big_probe.probe_radius_m = 5e-6;
-  const CorrectedInverse outside = corrected_inverse(k, middle, h, big_probe, correction);
+  const CorrectedInverse outside = corrected_inverse(k, middle, h, big_probe, default_window, correction);
   CHECK(outside.status == SampleStatus::outside_correction);
   CHECK(std::isnan(outside.p));
   // The closed form's own: no stretch, a stiffer tube than the sensor.
-  CHECK(corrected_inverse(k, diameters_in_si(d0, d0), h, instrument, correction).status == SampleStatus::lambda_not_above_one);
+  CHECK(corrected_inverse(k, diameters_in_si(d0, d0), h, instrument, default_window, correction).status == SampleStatus::lambda_not_above_one);
   Instrument soft_sensor = instrument;
   soft_sensor.sensor_stiffness_N_per_m = 2.0;
-  CHECK(corrected_inverse(k, middle, h, soft_sensor, correction).status == SampleStatus::stiffness_at_sensor_limit);
+  CHECK(corrected_inverse(k, middle, h, soft_sensor, default_window, correction).status == SampleStatus::stiffness_at_sensor_limit);
 }
 
 TEST_CASE("the evaluator gives the per-tube function's values and statuses, and checks its declaration") {
@@ -136,7 +147,7 @@ TEST_CASE("the evaluator gives the per-tube function's values and statuses, and 
   evaluate_checked(evaluator, block);
   for (std::size_t i = 0; i < 3; ++i) {
     CAPTURE(i);
-    const CorrectedInverse expected = corrected_inverse(k[i], diameters_in_si(d[i], d0[i]), h[i], instrument, shipped_correction());
+    const CorrectedInverse expected = corrected_inverse(k[i], diameters_in_si(d[i], d0[i]), h[i], instrument, default_window, shipped_correction());
     CHECK(block.status()[i] == expected.status);
     if (expected.status == SampleStatus::ok) {
       CHECK(block.column("p")[i] == expected.p);
