@@ -43,7 +43,7 @@ int run_fit_correction(const Arguments& arguments) {
                        "the logarithms of the measured groups d/d0 - 1, h/d0, rho/d0, F_top/(k d0), a/d0 (a the\n"
                        "probe's distance behind the apex) and F_low/F_top (the force window), correcting the closed\n"
                        "form's E and the far field's p/E to the finite-element inverse (src/correction/README.md).\n"
-                       "Each training tube counts once per force window its curve reaches (tops 1, 2 and 4 uN, bottoms\n"
+                       "Each training tube counts once per force window its curve reaches (tops 2, 3 and 4 uN, bottoms\n"
                        "0.05-0.5 of the top). Fits the tubes with k <= 20 N/m whose index is not a multiple of 5 plus\n"
                        "4, reports the largest errors in p and E on them and on the held-out tubes, next to the plain\n"
                        "closed form's, and the five-fold cross-validation's, and writes the correction for the model\n"

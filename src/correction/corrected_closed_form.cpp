@@ -123,7 +123,7 @@ CorrectedInverse corrected_inverse(double k_measured, const TubeDiameters& diame
   std::array<double, correction_groups> z{};
   const double bending_length = std::sqrt(h * diameters.d0 / 2);
   if (k_tube > correction.max_stiffness ||  // stiffer than any fitted tube
-      instrument.probe_radius_m > correction.max_probe_over_bending_length * bending_length ||
+      instrument.probe_radius_m / bending_length > correction.max_probe_over_bending_length ||  // as the fit divides
       !scaled(correction_log_groups(k_tube, diameters, h, instrument.probe_radius_m, force_window, correction), correction, z)) {
     result.status = SampleStatus::outside_correction;
     result.p = result.E = nan;

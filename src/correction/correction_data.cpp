@@ -76,7 +76,7 @@ std::vector<TrainingPoint> read_training_csv(const std::string& path) {
 
 std::vector<std::array<double, 2>> training_windows() {
   std::vector<std::array<double, 2>> windows;
-  for (const double top : {1e-6, 2e-6, 4e-6}) {
+  for (const double top : {2e-6, 3e-6, 4e-6}) {
     for (const double ratio : {0.05, 0.1, 0.25, 0.5}) windows.push_back({ratio * top, top});
   }
   return windows;

@@ -5,6 +5,7 @@
 // evaluator agrees with the per-tube function.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -51,6 +52,29 @@ TEST_CASE("the shipped correction is the fit of the shipped training data") {
     CHECK(shipped.low[g] == doctest::Approx(refit.low[g]).epsilon(1e-14));
     CHECK(shipped.high[g] == doctest::Approx(refit.high[g]).epsilon(1e-14));
   }
+}
+
+TEST_CASE("the kept curves are the ones k was measured on: the default window's k read back from them") {
+  // Every tube with a value over the default window (k from the simulation itself, printed by
+  // growthuq indent) against k refitted over the same window from its packed curve: the same
+  // numbers through a CSV, so agreement to round-off.
+  const std::vector<TrainingPoint> rows = read_training_csv(source_dir + "/src/correction/training.csv");
+  const std::vector<TrainingPoint> points = under_training_windows(rows, source_dir + "/src/correction/training_curves.csv");
+  int compared = 0;
+  for (const TrainingPoint& row : rows) {
+    if (!row.ok) continue;
+    const auto same = std::find_if(points.begin(), points.end(), [&](const TrainingPoint& point) {
+      return point.index == row.index && point.window == default_window;
+    });
+    REQUIRE(same != points.end());
+    CHECK(same->k == doctest::Approx(row.k).epsilon(1e-9));
+    ++compared;
+  }
+  CHECK(compared >= 100);
+  // Each tube counts under several windows, and no window the design does not list.
+  CHECK(points.size() > 4 * static_cast<std::size_t>(compared));
+  const std::vector<std::array<double, 2>> windows = training_windows();
+  for (const TrainingPoint& point : points) CHECK(std::find(windows.begin(), windows.end(), point.window) != windows.end());
 }
 
 TEST_CASE("held-out finite-element tubes: corrected p and E within 2 %, where the closed form misses by far more") {

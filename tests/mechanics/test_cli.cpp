@@ -141,7 +141,7 @@ TEST_CASE("eval --fidelity corrected: a model option the correction was not fitt
       {"--bending off", "--bending = 'off': expected on,"},
       {"--tube-length-um 80", "--tube-length-um = '80': expected 100,"},
       {"--probe-distance-um 20", "--probe-distance-um = '20': expected 10,"},
-      {"--window-uN 0.4,3", "--window-uN = '0.4,3': expected 0.4,4,"},
+      {"--window-uN 2,3", "--window-uN = '2,3': expected a force window whose bottom is 0.05 to 0.5 of its top"},
       {"--nu 0.3", "--nu = '0.3': expected 0.2,"},
   });
   // The options it was fitted for, stated or not, give a value.
