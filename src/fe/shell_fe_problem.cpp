@@ -7,6 +7,14 @@
 #include "growthuq/core/numbers.hpp"
 
 namespace growthuq::fe {
+namespace {
+
+// The study's driver's first increment of its indentation step (initialInc = 0.0005 of a step
+// whose time is the probe's depth in um: gmunglani/Chip, module.py), m: the damping factor of its
+// stabilisation is set from that increment.
+constexpr double driver_first_increment = 0.5e-9;
+
+}  // namespace
 
 ForwardProblem make_problem(const ShellFeOptions& options, double plasmolysed_diameter, double probe_radius,
                             double poisson) {
@@ -23,6 +31,8 @@ ForwardProblem make_problem(const ShellFeOptions& options, double plasmolysed_di
   problem.half_model = options.half_model;
   problem.contact = options.contact;
   problem.mesh = options.mesh;
+  problem.stabilisation = options.stabilisation;
+  if (options.stabilisation.active()) problem.first_increment = driver_first_increment / plasmolysed_diameter;
   return problem;
 }
 
@@ -47,6 +57,15 @@ void curve_in_si(const ForwardResult& result, double d0, double young, Indentati
   for (double delta : result.depth) curve.depth.push_back(delta * d0);
   for (double force : result.force) curve.force.push_back(force * force_scale);
   for (double radius : result.contact_radius) curve.contact_radius.push_back(radius * d0);
+  const double energy_scale = force_scale * d0;
+  curve.strain_energy.clear();
+  curve.pressure_energy.clear();
+  curve.dissipated_energy.clear();
+  for (double energy : result.strain_energy) curve.strain_energy.push_back(energy * energy_scale);
+  for (double energy : result.pressure_energy) curve.pressure_energy.push_back(energy * energy_scale);
+  for (double energy : result.dissipated_energy) curve.dissipated_energy.push_back(energy * energy_scale);
+  curve.damping_factor = result.damping_factor;
+  curve.damping_lowerings = result.damping_lowerings;
   curve.turgid_diameter = result.turgid_diameter * d0;
   curve.axial_stretch = result.axial_stretch;
   curve.thickness_stretch = result.thickness_stretch;

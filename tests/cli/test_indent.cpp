@@ -160,6 +160,14 @@ TEST_CASE("indent and eval --fidelity: bad input is one line naming the flag, no
       {std::string("indent ") + tube + " --depth-um 9 --out c.csv", "--depth-um = '9': expected a depth in [0, d0]"},
       {std::string("indent ") + tube + " --field wall.vtk --out c.csv", "--field = 'wall.vtk': expected a file name ending in .xdmf"},
       {std::string("indent ") + tube, "missing --out"},
+      {std::string("indent ") + tube + " --stabilisation-fraction -0.1 --out c.csv",
+       "--stabilisation-fraction = '-0.1': expected a dissipated-energy fraction in [0, 1)"},
+      {std::string("indent ") + tube + " --stabilisation-fraction 2e-4 --stabilisation-ratio 1.5 --out c.csv",
+       "--stabilisation-ratio = '1.5': expected an adaptive damping ratio in [0, 1)"},
+      {std::string("indent ") + tube + " --stabilisation-ratio 0.05 --out c.csv",
+       "--stabilisation-ratio = '0.05': expected 0 unless a stabilisation fraction above 0 is given"},
+      {std::string("indent ") + tube + " --stabilisation-fraction 2e-4 --stabilisation-energy total --out c.csv",
+       "--stabilisation-energy = 'total': expected model"},
       {"eval --fidelity fast --rho-um 0.25 --k 2 --d-um 6.4 --d0-um 5.35 --h-nm 200", "--fidelity = 'fast': expected closed_form (the thin shell's closed forms"},
       {"eval --law stvk --rho-um 0.25 --k 2 --d-um 6.4 --d0-um 5.35", "--law needs --fidelity shell_fe"},
       {"eval --fidelity shell_fe --rho-um 0.25 --k 2 --d-um 6.4 --d0-um 5.35", "--h-nm is required with --fidelity shell_fe"},
@@ -177,6 +185,36 @@ TEST_CASE("indent and eval --fidelity: bad input is one line naming the flag, no
   const CliOutcome refused = run_cli(std::string("indent ") + tube + " --out c.csv", scratch.root);
   CHECK(refused.exit_code == 2);
   CHECK(refused.err.find("--force") != std::string::npos);
+}
+
+TEST_CASE("indent --stabilisation-fraction: the energies the library records, printed at the deepest point") {
+  const ScratchDirectory scratch("indent_stabilised");
+  const std::string flags = " --stabilisation-fraction 2e-2 --stabilisation-ratio 0.05 --stabilisation-energy step";
+  const CliOutcome run = run_cli(std::string("indent ") + tube + flags + " --depth-um 1 --quiet --out curve.csv", scratch.root);
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  CHECK(run.out.find("viscous stabilisation: fraction 0.02 of the step strain energy, capped at 0.05") != std::string::npos);
+  auto values = values_of(run.out);
+  IndentationInput input;
+  input.pressure = 0.45 * 1e6;
+  input.young = 45 * 1e6;
+  input.thickness = 200 * 1e-9;
+  input.plasmolysed_diameter = 5.35 * 1e-6;
+  input.depth = 1e-6;
+  input.instrument.probe_radius_m = from_um(0.25);
+  ShellFeOptions options;
+  options.mesh = ShellFeMesh::coarse;
+  options.stabilisation = {.fraction = 2e-2, .ratio = 0.05, .energy = ShellFeStabilisationEnergy::step};
+  const IndentationCurve curve = indent(input, options);
+  REQUIRE(curve.status == SampleStatus::ok);
+  REQUIRE(curve.dissipated_energy.back() > 0);
+  // The library's energies in pJ, to the unit conversions' last bits (see the first case).
+  const double stored = curve.strain_energy.back() + curve.pressure_energy.back() - curve.strain_energy.front() -
+                        curve.pressure_energy.front();
+  CHECK(parse_double(values["strain_energy_pJ"], "test", "E") == doctest::Approx(curve.strain_energy.back() * 1e12).epsilon(1e-3));
+  CHECK(parse_double(values["stored_by_indentation_pJ"], "test", "U") == doctest::Approx(stored * 1e12).epsilon(1e-3));
+  CHECK(parse_double(values["dissipated_energy_pJ"], "test", "D") ==
+        doctest::Approx(curve.dissipated_energy.back() * 1e12).epsilon(1e-3));
 }
 
 TEST_CASE("indent --field: the curve and the field commit together, so a field that fails leaves no curve") {
