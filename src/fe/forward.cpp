@@ -241,7 +241,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   // The nodal residual that is left, 1e-6 of E h0 times the shortest edge, is below 1e-5 of the
   // smallest recorded force; the contact's active set makes the last digits linear to reach.
   indentation.newton.gradient_tolerance = 1e-6;
-  if (p.first_increment > 0 && p.max_depth > 0) {
+  if (p.stabilisation.active() && p.first_increment > 0 && p.max_depth > 0) {
     // The driver's first increment (its damping factor is set from it), then the same growth.
     indentation.first_step = std::min(indentation.first_step, p.first_increment / p.max_depth);
     indentation.min_step = std::min(indentation.min_step, indentation.first_step / 16);

@@ -37,7 +37,8 @@ struct ForwardProblem {            // all dimensionless
   ShellFeMesh mesh = ShellFeMesh::standard;
   ContactMethod contact = ContactMethod::active_set;
   // The study's driver's viscous stabilisation of the indentation steps (viscous_stabilisation.hpp;
-  // off by default), and its first increment's depth (/ d0; 0: the load stepping's own).
+  // off by default), and the depth of a stabilised indentation's first increment, from which its
+  // damping factor is set (/ d0; 0: the load stepping's own, 1/48 of the curve).
   ShellFeStabilisation stabilisation;
   double first_increment = 0.0;
 };

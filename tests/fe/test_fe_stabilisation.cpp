@@ -81,10 +81,9 @@ TEST_CASE("stabilised: the probe's work is the stored energy's change plus the d
   const fe::ForwardResult reference = fe::simulate_forward(short_tube());
   REQUIRE(reference.status == SampleStatus::ok);
   const double reference_residual = balance(reference);
-  // A fraction of the indentation's own stored energy large enough to dissipate a good part of
-  // the probe's work.
-  const fe::ForwardResult damped =
-      fe::simulate_forward(stabilised({.fraction = 0.2, .energy = ShellFeStabilisationEnergy::step}));
+  // A fraction of the model's strain energy that dissipates about a tenth of the probe's work
+  // (measured: 0.090).
+  const fe::ForwardResult damped = fe::simulate_forward(stabilised({.fraction = 1e-2}));
   REQUIRE(damped.status == SampleStatus::ok);
   const double work = probe_work(damped), dissipated = damped.dissipated_energy.back();
   std::printf("balance: undamped residual %.3e of the work %.6e; damped: work %.6e, stored %.6e, dissipated %.6e "
@@ -93,26 +92,35 @@ TEST_CASE("stabilised: the probe's work is the stored energy's change plus the d
               dissipated / work, balance(damped), damped.damping_factor);
   REQUIRE(dissipated > 0.05 * work);  // large enough for the balance to see it
   CHECK(work > probe_work(reference));  // the viscous forces resist the probe
-  CHECK(std::fabs(balance(damped)) < 0.1 * dissipated / work);
-  CHECK(std::fabs(balance(damped)) < std::fabs(reference_residual) + 0.01);
+  // The residual: the trapezoid's error (undamped: 4e-4 of the work) and the trapezoid's average
+  // of the viscous force over a step against its backward-Euler value at the step's end (a share
+  // of the dissipation that shrinks with the steps; measured -1.6e-3 of the work). Leaving the
+  // dissipated energy out, or the viscous force out of the probe's reaction, misses by about
+  // 0.09 of the work.
+  CHECK(std::fabs(reference_residual) < 1e-3);
+  CHECK(std::fabs(balance(damped)) < 0.05 * dissipated / work);
 }
 
 TEST_CASE("stabilised with the adaptive cap: dissipated within the ratio of the strain energy at every depth") {
-  const double ratio = 0.05;
-  const ShellFeStabilisation uncapped{.fraction = 0.2, .energy = ShellFeStabilisationEnergy::step};
+  // The model's strain energy (the inflation's) is about a hundred times the indentation's work
+  // here, so the driver's ratio (0.05) never binds; a ratio of 1e-3 does at a fraction of 0.1
+  // (uncapped, the dissipation reaches about 2e-3 of it).
+  const double ratio = 1e-3;
+  const ShellFeStabilisation uncapped{.fraction = 0.1};
   ShellFeStabilisation capped = uncapped;
   capped.ratio = ratio;
   const fe::ForwardResult free = fe::simulate_forward(stabilised(uncapped));
   const fe::ForwardResult held = fe::simulate_forward(stabilised(capped));
   REQUIRE(free.status == SampleStatus::ok);
   REQUIRE(held.status == SampleStatus::ok);
-  const std::size_t end = free.depth.size() - 1;
-  std::printf("cap: uncapped dissipated / stored %.4f; capped %.4f after %d lowerings\n",
-              free.dissipated_energy[end] / stored(free, end),
-              held.dissipated_energy.back() / stored(held, held.depth.size() - 1), held.damping_lowerings);
-  REQUIRE(free.dissipated_energy[end] > ratio * stored(free, end));  // without the cap it is exceeded
+  std::printf("cap: uncapped dissipated / strain energy %.4e; capped %.4e after %d lowerings\n",
+              free.dissipated_energy.back() / free.strain_energy.back(),
+              held.dissipated_energy.back() / held.strain_energy.back(), held.damping_lowerings);
+  REQUIRE(free.dissipated_energy.back() > ratio * free.strain_energy.back());  // without the cap it is exceeded
   CHECK(held.damping_lowerings > 0);
   for (std::size_t i = 1; i < held.depth.size(); ++i) {
-    CHECK(held.dissipated_energy[i] <= ratio * stored(held, i) * (1 + 1e-12));
+    CHECK(held.dissipated_energy[i] <= ratio * held.strain_energy[i] * (1 + 1e-12));
   }
+  // Lowered to the cap, not to nothing: the capped curve still dissipates most of what it may.
+  CHECK(held.dissipated_energy.back() > 0.5 * ratio * held.strain_energy.back());
 }
