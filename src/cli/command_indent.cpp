@@ -103,7 +103,7 @@ int run_indent(const Arguments& arguments) {
   described.add_options()
       ("stabilisation-fraction", po::value(&flags.stabilisation_fraction),
        "the study's driver's viscous stabilisation of the indentation, for measuring what it does (not for "
-       "use): its dissipated-energy fraction, in [0, 1) (default 0: off; the commercial code's default 2e-4). "
+       "use): its dissipated-energy fraction, >= 0 (default 0: off; the commercial code's default 2e-4). "
        "Viscous forces c M* v (M* lumped, of unit density) resist each load step; c is set after the first "
        "increment (the driver's, 0.0005 um) so that increments like it would dissipate this fraction of the "
        "strain energy, both extrapolated over the step. The probe's force includes the viscous resistance")

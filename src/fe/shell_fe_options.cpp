@@ -116,10 +116,12 @@ ShellFeStabilisationEnergy parse_shell_fe_stabilisation_energy(std::string_view 
 
 void validate_stabilisation(const ShellFeStabilisation& stabilisation, std::string_view location,
                             std::string_view fraction_key, std::string_view ratio_key) {
-  // A fraction or ratio of an energy: 1 would let the damping take as much as the wall stores.
-  if (!(std::isfinite(stabilisation.fraction) && stabilisation.fraction >= 0.0 && stabilisation.fraction < 1.0)) {
+  // The fraction may exceed 1: read as the share of one increment's dissipation (src/fe/README.md,
+  // "Viscous stabilisation"), the step's is that times the number of increments. The cap's ratio
+  // at 1 would let the damping take as much as the wall stores.
+  if (!(std::isfinite(stabilisation.fraction) && stabilisation.fraction >= 0.0)) {
     throw_bad_value(location, fraction_key, format_double(stabilisation.fraction),
-                    "a dissipated-energy fraction in [0, 1) (0: off; the commercial code's default 2e-4)");
+                    "a non-negative dissipated-energy fraction (0: off; the commercial code's default 2e-4)");
   }
   if (!(std::isfinite(stabilisation.ratio) && stabilisation.ratio >= 0.0 && stabilisation.ratio < 1.0)) {
     throw_bad_value(location, ratio_key, format_double(stabilisation.ratio),

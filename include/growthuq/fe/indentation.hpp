@@ -66,7 +66,7 @@ ShellFeMesh parse_shell_fe_mesh(std::string_view text, std::string_view location
 ShellFeContact parse_shell_fe_contact(std::string_view text, std::string_view location, std::string_view key);
 ShellFeStabilisationEnergy parse_shell_fe_stabilisation_energy(std::string_view text, std::string_view location,
                                                                std::string_view key);
-// The stabilisation's fraction and ratio in [0, 1), the ratio 0 unless the fraction is above 0;
+// The stabilisation's fraction >= 0 and ratio in [0, 1), the ratio 0 unless the fraction is above 0;
 // InputError naming `fraction_key` or `ratio_key` (a flag's name or the option's) otherwise.
 void validate_stabilisation(const ShellFeStabilisation& stabilisation, std::string_view location,
                             std::string_view fraction_key, std::string_view ratio_key);
