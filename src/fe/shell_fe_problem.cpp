@@ -1,6 +1,7 @@
 #include "shell_fe_problem.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include "fe/far_field.hpp"
 #include "growthuq/core/error.hpp"
@@ -50,20 +51,17 @@ double far_field_unstressed_thickness(ShellFeLaw law, double pressure_over_young
 }
 
 void curve_in_si(const ForwardResult& result, double d0, double young, IndentationCurve& curve) {
-  const double force_scale = young * d0 * d0;
-  curve.depth.clear();
-  curve.force.clear();
-  curve.contact_radius.clear();
-  for (double delta : result.depth) curve.depth.push_back(delta * d0);
-  for (double force : result.force) curve.force.push_back(force * force_scale);
-  for (double radius : result.contact_radius) curve.contact_radius.push_back(radius * d0);
-  const double energy_scale = force_scale * d0;
-  curve.strain_energy.clear();
-  curve.pressure_energy.clear();
-  curve.dissipated_energy.clear();
-  for (double energy : result.strain_energy) curve.strain_energy.push_back(energy * energy_scale);
-  for (double energy : result.pressure_energy) curve.pressure_energy.push_back(energy * energy_scale);
-  for (double energy : result.dissipated_energy) curve.dissipated_energy.push_back(energy * energy_scale);
+  const double force_scale = young * d0 * d0, energy_scale = force_scale * d0;
+  const auto scaled = [](const std::vector<double>& from, double scale, std::vector<double>& to) {
+    to.clear();
+    for (double value : from) to.push_back(value * scale);
+  };
+  scaled(result.depth, d0, curve.depth);
+  scaled(result.force, force_scale, curve.force);
+  scaled(result.contact_radius, d0, curve.contact_radius);
+  scaled(result.strain_energy, energy_scale, curve.strain_energy);
+  scaled(result.pressure_energy, energy_scale, curve.pressure_energy);
+  scaled(result.dissipated_energy, energy_scale, curve.dissipated_energy);
   curve.damping_factor = result.damping_factor;
   curve.damping_lowerings = result.damping_lowerings;
   curve.turgid_diameter = result.turgid_diameter * d0;
