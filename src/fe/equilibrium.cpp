@@ -39,6 +39,7 @@ EquilibriumResult solve_equilibrium(ShellObjective& objective, NewtonSolver& sol
     const double t_next = t + dt > 1.0 - 1e-9 ? 1.0 : t + dt;
     const double step = t_next - t;
     set_loads(t_next, objective.assembly().loads());
+    objective.begin_step(x, step);
     trial = x;
     if (previous_dt > 0) trial += (step / previous_dt) * previous_move;  // linear predictor
     objective.start_step(trial);

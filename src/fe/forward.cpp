@@ -196,9 +196,18 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
     assembly->loads().obstacles.planes = {RigidPlane{Eigen::Vector3d(x.row(0).minCoeff(), 0, 0), Eigen::Vector3d::UnitX()}};
   }
   const double mirror_factor = setup.half ? 2.0 : 1.0;
+  if (p.stabilisation.active()) objective->stabilise(p.stabilisation);
+  auto record_energies = [&](const Eigen::Matrix3Xd& state) {
+    const EnergyParts parts = assembly->energy(state);
+    const ViscousStabilisation* stabilisation = objective->stabilisation();
+    result.strain_energy.push_back(mirror_factor * (parts.membrane + parts.bending));
+    result.pressure_energy.push_back(mirror_factor * parts.pressure);
+    result.dissipated_energy.push_back(stabilisation ? mirror_factor * stabilisation->dissipated() : 0.0);
+  };
   result.depth = {0.0};
   result.force = {0.0};
   result.contact_radius = {0.0};
+  record_energies(x);
   bool lost = false;
   auto record = [&](double t, const Eigen::Matrix3Xd& state) {
     const RigidSphere& probe = assembly->loads().obstacles.spheres.front();
@@ -214,6 +223,7 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
     result.depth.push_back(t * p.max_depth);
     result.force.push_back(mirror_factor * contact.sphere_force.front().x());
     result.contact_radius.push_back(radius);
+    record_energies(state);
     if (!(result.force.back() > 0)) {
       lost = true;
       return false;
@@ -231,6 +241,11 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   // The nodal residual that is left, 1e-6 of E h0 times the shortest edge, is below 1e-5 of the
   // smallest recorded force; the contact's active set makes the last digits linear to reach.
   indentation.newton.gradient_tolerance = 1e-6;
+  if (p.stabilisation.active() && p.first_increment > 0 && p.max_depth > 0) {
+    // The driver's first increment (its damping factor is set from it), then the same growth.
+    indentation.first_step = std::min(indentation.first_step, p.first_increment / p.max_depth);
+    indentation.min_step = std::min(indentation.min_step, indentation.first_step / 16);
+  }
   EquilibriumResult indented{};
   if (p.max_depth > 0) {
     indented = solve_equilibrium(
@@ -241,6 +256,10 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   result.newton_iterations += indented.newton_iterations;
   result.load_steps = indented.steps;
   result.indentation_iterations = indented.newton_iterations;
+  if (const ViscousStabilisation* stabilisation = objective->stabilisation()) {
+    result.damping_factor = stabilisation->damping_factor();
+    result.damping_lowerings = stabilisation->lowerings();
+  }
   add_timing(*solver, *objective, result);
   fill_fields(setup, *assembly, x, result);
   if (lost) {

@@ -36,6 +36,11 @@ struct ForwardProblem {            // all dimensionless
   bool half_model = true;
   ShellFeMesh mesh = ShellFeMesh::standard;
   ContactMethod contact = ContactMethod::active_set;
+  // The study's driver's viscous stabilisation of the indentation steps (viscous_stabilisation.hpp;
+  // off by default), and the depth of a stabilised indentation's first increment, from which its
+  // damping factor is set (/ d0; 0: the load stepping's own, 1/48 of the curve).
+  ShellFeStabilisation stabilisation;
+  double first_increment = 0.0;
 };
 
 // The deepest indentation (/ d0) that simulate_forward accepts, and that indent() and the inverse
@@ -56,6 +61,11 @@ struct ForwardResult {
   std::vector<double> depth;       // indentation delta / d0, starting at 0
   std::vector<double> force;       // F / (E d0^2), whole tube (half model doubled)
   std::vector<double> contact_radius;  // / d0
+  // At each depth, whole tube, / (E d0^3): the strain energy (membrane + bending), the pressure's
+  // potential -p V, and the energy the viscous stabilisation has dissipated so far (0 without it).
+  std::vector<double> strain_energy, pressure_energy, dissipated_energy;
+  double damping_factor = 0.0;     // the stabilisation's c at the end (solver units), 0 off
+  int damping_lowerings = 0;       // steps solved again with c lowered under the adaptive cap
   double turgid_diameter = 0.0;    // / d0, far from tip and ends (tube), or sphere diameter
   double axial_stretch = 0.0;      // tube only
   double thickness_stretch = 0.0;  // h/h0 there
