@@ -6,23 +6,11 @@
 
 #include <cstdio>
 
+#include "arabidopsis_like_tube.hpp"
 #include "growthuq/fe/indentation.hpp"
 
 using namespace growthuq;
-
-namespace {
-
-IndentationInput arabidopsis_like() {
-  IndentationInput input;
-  input.pressure = 0.45e6;
-  input.young = 45e6;
-  input.thickness = 200e-9;
-  input.plasmolysed_diameter = 5.35e-6;
-  input.instrument.probe_radius_m = 0.25e-6;
-  return input;
-}
-
-}  // namespace
+using growthuq::testing::arabidopsis_like;
 
 TEST_CASE("an automatic depth: one curve, ending at the window's top, with the k of an explicit deeper curve") {
   ShellFeOptions options;

@@ -8,25 +8,13 @@
 
 #include "fe/force_window.hpp"
 #include "fe/forward.hpp"
+#include "arabidopsis_like_tube.hpp"
 #include "growthuq/fe/indentation.hpp"
 
 using namespace growthuq;
+using growthuq::testing::arabidopsis_like;
 
 namespace {
-
-// Arabidopsis-like: d0 = 5.35 um, turgid h = 200 nm, p = 0.45 MPa, E = 45 MPa (p/E = 0.01,
-// d/d0 about 1.18), rho = 0.25 um: k about 1.9 N/m, so the curve reaches the window's top
-// (4 uN) near 2.1 um, shallower than 0.45 d0 = 2.4 um.
-IndentationInput arabidopsis_like() {
-  IndentationInput input;
-  input.pressure = 0.45e6;
-  input.young = 45e6;
-  input.thickness = 200e-9;
-  input.plasmolysed_diameter = 5.35e-6;
-  input.instrument.probe_radius_m = 0.25e-6;
-  input.instrument.poisson_ratio = 0.2;
-  return input;
-}
 
 ShellFeOptions coarse() {
   ShellFeOptions options;
