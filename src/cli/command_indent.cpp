@@ -96,8 +96,8 @@ int run_indent(const Arguments& arguments) {
                                        "law's thickness stretch in the far field)")
       ("h0-nm", po::value(&flags.h0_nm), "instead of --h-nm: the unstressed (plasmolysed) wall thickness h0 [nm]")
       ("d0-um", po::value(&flags.d0_um), "plasmolysed (unstressed) mid-surface diameter d0 [um]")
-      ("depth-um", po::value(&flags.depth_um), "deepest indentation [um], 0 to d0 (default 0: deep enough for the "
-                                               "force window's top, from the closed-form k, deepened if short)");
+      ("depth-um", po::value(&flags.depth_um), "deepest indentation [um], 0 to d0 (default 0: until the force passes "
+                                               "the window's top, at most 0.6 d0)");
   flags.instrument.declare(described);
   flags.model.declare(described);
   described.add_options()
@@ -150,24 +150,15 @@ int run_indent(const Arguments& arguments) {
     check_can_write(shell_field_data_path(flags.field), overwrite);
   }
 
-  // A curve takes minutes: its progress in nanometres of depth. A curve whose force stays below
-  // the window's top is simulated again, deeper (src/fe/indentation.cpp): its progress starts
-  // anew, after one line saying why, so the restart does not read as lost work.
+  // A curve takes minutes: its progress in nanometres of depth, of the deepest it may go (an
+  // automatic curve stops earlier, at the window's top: src/fe/indentation.cpp).
   const ProgressMode mode = choose_progress_mode(flags.quiet);
   std::optional<StepProgress> progress;
-  std::size_t shown = 0, shown_total = 0;
+  std::size_t shown = 0;
   const auto follow = [&](double depth, double max_depth) {
     const auto total = static_cast<std::size_t>(std::lround(max_depth * 1e9));
     const auto reached = std::min(total, static_cast<std::size_t>(std::lround(depth * 1e9)));
-    if (!progress || total != shown_total) {
-      if (progress) progress->clear();
-      if (progress && mode != ProgressMode::none) {
-        std::cerr << "indent: the force stayed below the window's top (" << format_double(options.force_window[1] * 1e6)
-                  << " uN) by " << shown_total << " nm: simulating the curve again to " << total << " nm\n";
-      }
-      progress.emplace(mode, std::cerr, "indent", "nm of depth", total);
-      shown = 0, shown_total = total;
-    }
+    if (!progress) progress.emplace(mode, std::cerr, "indent", "nm of depth", total);
     progress->advance(reached - shown);
     shown = reached;
   };

@@ -27,7 +27,7 @@ bool finite_all(std::initializer_list<double> values) {
 // An empty string when the problem is admissible, else what is wrong (one line).
 std::string check(const ForwardProblem& p, const WallGeometry& geometry, SampleStatus& status) {
   status = SampleStatus::invalid_input;
-  if (!finite_all({p.pressure, p.thickness, p.poisson, p.probe_radius, p.max_depth})) {
+  if (!finite_all({p.pressure, p.thickness, p.poisson, p.probe_radius, p.max_depth, p.step_depth})) {
     return "non-finite input";
   }
   if (p.pressure < 0) return "pressure p/E = " + std::to_string(p.pressure) + ": expected >= 0";
@@ -41,6 +41,10 @@ std::string check(const ForwardProblem& p, const WallGeometry& geometry, SampleS
   if (!(p.max_depth >= 0 && p.max_depth <= deepest_automatic_depth)) {
     return "max depth / d0 = " + std::to_string(p.max_depth) + ": expected in [0, " +
            std::to_string(deepest_automatic_depth) + "]";
+  }
+  if (!(p.step_depth >= 0 && p.step_depth <= p.max_depth)) {
+    return "step depth / d0 = " + std::to_string(p.step_depth) + ": expected in [0, max depth " +
+           std::to_string(p.max_depth) + "]";
   }
   return geometry.check(status).value_or(std::string());
 }
@@ -229,11 +233,17 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
       return false;
     }
     if (p.on_depth) p.on_depth(t * p.max_depth);
-    return true;
+    return !(p.long_enough && p.long_enough(result.depth, result.force));
   };
+  // Steps sized from the step depth (step_share of the path): the contact forms gently, then
+  // the steps grow, up to an eighth of the step depth or of the depth reached, whichever is
+  // larger (the latter only on a curve that runs on past its step depth).
+  const double step_share = p.step_depth > 0 ? p.step_depth / p.max_depth : 1.0;
   LoadSteppingOptions indentation;
-  indentation.first_step = 1.0 / 48;  // the contact forms gently, then the steps grow
-  indentation.max_step = 1.0 / 8;
+  indentation.first_step = step_share / 48;
+  indentation.max_step = step_share / 8;
+  indentation.relative_max_step = 1.0 / 8;
+  indentation.min_step = step_share / 4096;
   // A Newton step may not carry a node across the probe: the line search sees only the energy
   // at the step's end, where a wall that has jumped past the probe has none left in contact.
   indentation.newton.max_step = 0.25 * rho;

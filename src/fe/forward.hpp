@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,14 @@ struct ForwardProblem {            // all dimensionless
   double tube_length = 0.0;        // L/d0 (tube only)
   double probe_distance = 0.0;     // a/d0 behind the apex (tube only)
   double max_depth = 0.0;          // deepest indentation, / d0
+  // The depth the load steps are sized from (/ d0; 0: max_depth): the first a 48th of it, none
+  // larger than an eighth of it or of the depth reached. A curve that stops at a force
+  // (`long_enough`) sizes its steps from its first estimate of the depth and runs on past it.
+  double step_depth = 0.0;
+  // Called after each converged indentation step with the curve so far (depth / d0, force
+  // / (E d0^2), whole tube); true ends the curve there (status ok), short of max_depth, which
+  // then only bounds it. Unset: the curve runs to max_depth.
+  std::function<bool(std::span<const double>, std::span<const double>)> long_enough;
   // Called after each converged indentation step with its depth (/ d0), for a progress display.
   std::function<void(double)> on_depth;
   bool substrate = true;
@@ -81,7 +90,7 @@ struct ForwardResult {
   std::vector<MembraneStress> face_stress;
 };
 
-// Inflate to `pressure`, then indent to `max_depth`. A pure function of its input: no global
+// Inflate to `pressure`, then indent to `max_depth` (or until `long_enough`). A pure function of its input: no global
 // state, safe to call concurrently from several threads or processes. Never throws for a
 // numerical failure (status instead); throws InputError only for an unreadable mesh file.
 //

@@ -99,7 +99,7 @@ struct IndentationInput {
   double thickness = 0.0;             // m, see thickness_kind
   ThicknessKind thickness_kind = ThicknessKind::turgid;
   double plasmolysed_diameter = 0.0;  // d0 (unstressed), m
-  double depth = 0.0;                 // deepest indentation, m; 0: deep enough for the window's top
+  double depth = 0.0;                 // deepest indentation, m; 0: until the force passes the window's top
   Instrument instrument;     // probe radius rho, Poisson ratio nu (k_sys: the k reported
                                       // is the tube's, as the sensor measures it in series)
 };
@@ -136,18 +136,21 @@ struct IndentationCurve {
   int newton_iterations = 0;             // inflation and indentation
   int indentation_load_steps = 0;        // converged steps of the probe
   int indentation_newton_iterations = 0;
+  int force_curves = 0;                  // indentations simulated (inflation included): 1
   double seconds = 0.0;                  // wall time of the whole call
   double seconds_assembly = 0.0, seconds_factorisation = 0.0, seconds_contact = 0.0;
   int factorisations = 0;                // sparse Cholesky factorisations, shifted retries included
   ShellFeField field;                    // empty unless asked for
 };
 
-// Progress of indent(): after each converged indentation step, its depth and the depth the
-// curve is going to (m). A deepened curve starts again from 0 towards its new depth.
+// Progress of indent(): after each converged indentation step, its depth and the deepest the
+// curve may go (m): the depth asked for, or fe::deepest_automatic_depth (0.6 d0) for a curve that
+// stops at the window's top.
 using IndentationProgress = std::function<void(double depth, double max_depth)>;
 
-// One forward simulation: inflate to p, indent to `input.depth` (or, when 0, deep enough for
-// the force window's top, deepened up to twice if the first depth fell short), fit k.
+// One forward simulation: inflate to p, indent to `input.depth` (or, when 0, until the force
+// passes the window's top, at most 0.6 d0: one curve, its steps sized from the closed form's
+// estimate of the depth and continued past it), fit k.
 // `keep_field` fills `field` with the final state; `progress`, if given, follows the
 // indentation. Throws InputError only for invalid input or options and an unreadable mesh
 // file; a numerical failure is a status.
@@ -176,6 +179,7 @@ struct ShellFeInverse {
   double closed_form_young = 0.0;     // the thin-shell inverse's E (the root's first estimate), Pa
   double fitted_stiffness = 0.0;      // k of the model at (p, E) over the window, N/m
   int newton_iterations = 0;
+  int force_curves = 0;               // indentations simulated: 1 (0 when it stopped before)
   double seconds = 0.0;
 };
 
