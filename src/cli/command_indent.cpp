@@ -30,6 +30,7 @@ struct IndentFlags {
   std::string p_MPa, E_MPa, h_nm, h0_nm, d0_um, depth_um = "0";
   InstrumentFlags instrument;
   ShellFeFlags model;
+  std::string stabilisation_fraction = "0", stabilisation_ratio = "0", stabilisation_energy = "model";
   std::string field;
   std::string out;
   bool force = false;
@@ -70,6 +71,16 @@ IndentationInput input_from(const IndentFlags& flags) {
   return input;
 }
 
+// The study's driver's viscous stabilisation, from its three flags.
+ShellFeStabilisation stabilisation_from(const IndentFlags& flags) {
+  ShellFeStabilisation stabilisation;
+  stabilisation.fraction = parse_double(flags.stabilisation_fraction, command, "--stabilisation-fraction");
+  stabilisation.ratio = parse_double(flags.stabilisation_ratio, command, "--stabilisation-ratio");
+  stabilisation.energy = parse_shell_fe_stabilisation_energy(flags.stabilisation_energy, command, "--stabilisation-energy");
+  validate_stabilisation(stabilisation, command, "--stabilisation-fraction", "--stabilisation-ratio");
+  return stabilisation;
+}
+
 void print(std::string_view name, const std::string& value) { std::cout << name << " = " << value << "\n"; }
 void print(std::string_view name, double value) { print(name, format_double(value)); }
 
@@ -85,11 +96,23 @@ int run_indent(const Arguments& arguments) {
                                        "law's thickness stretch in the far field)")
       ("h0-nm", po::value(&flags.h0_nm), "instead of --h-nm: the unstressed (plasmolysed) wall thickness h0 [nm]")
       ("d0-um", po::value(&flags.d0_um), "plasmolysed (unstressed) mid-surface diameter d0 [um]")
-      ("depth-um", po::value(&flags.depth_um), "deepest indentation [um], 0 to d0 (default 0: deep enough for the "
-                                               "force window's top, from the closed-form k, deepened if short)");
+      ("depth-um", po::value(&flags.depth_um), "deepest indentation [um], 0 to d0 (default 0: until the force passes "
+                                               "the window's top, at most 0.6 d0)");
   flags.instrument.declare(described);
   flags.model.declare(described);
   described.add_options()
+      ("stabilisation-fraction", po::value(&flags.stabilisation_fraction),
+       "the study's driver's viscous stabilisation of the indentation, for measuring what it does (not for "
+       "use): its dissipated-energy fraction, >= 0 (default 0: off; the commercial code's default 2e-4). "
+       "Viscous forces c M* v (M* lumped, of unit density) resist each load step; c is set after the first "
+       "increment (the driver's, 0.0005 um) so that increments like it would dissipate this fraction of the "
+       "strain energy, both extrapolated over the step. The probe's force includes the viscous resistance")
+      ("stabilisation-ratio", po::value(&flags.stabilisation_ratio),
+       "adaptive cap of the stabilisation, in [0, 1): c is lowered (and the step solved again) wherever the "
+       "dissipated energy would exceed this ratio of the strain energy (default 0: no cap; the driver's 0.05)")
+      ("stabilisation-energy", po::value(&flags.stabilisation_energy),
+       "the strain energy of the fraction and the cap: model (default; the model's, the inflation's included) or "
+       "step (what the indentation stores: strain energy and -p V, from the indentation's start)")
       ("field", po::value(&flags.field), "also write the deformed wall at the deepest point: FILE.xdmf and FILE.h5 "
                                          "(per-face von Mises and principal membrane stresses in MPa, displacement per "
                                          "vertex in um; ParaView opens the .xdmf)")
@@ -108,13 +131,17 @@ int run_indent(const Arguments& arguments) {
                        "d_um (turgid diameter far from tip and end; the sphere's for --geometry sphere), axial_stretch,\n"
                        "thickness_stretch, h0_nm, contact_radius_um (at the window's top), newton_iterations, seconds,\n"
                        "seconds_assembly, seconds_factorisation, factorisations, seconds_contact, status (ok or why not: the\n"
-                       "exit status is 0 whenever the simulation ran; k is printed only for status ok).",
+                       "exit status is 0 whenever the simulation ran; k is printed only for status ok). With\n"
+                       "--stabilisation-fraction, at the deepest point: strain_energy_pJ (the model's),\n"
+                       "stored_by_indentation_pJ (strain energy and -p V the indentation added), dissipated_energy_pJ,\n"
+                       "damping_factor and damping_lowerings (steps the cap solved again).",
                        described, {}, values)) {
     return 0;
   }
   if (flags.out.empty()) throw missing_argument("indent", usage, "--out");
   const IndentationInput input = input_from(flags);
-  const ShellFeOptions options = flags.model.parse(command);
+  ShellFeOptions options = flags.model.parse(command);
+  options.stabilisation = stabilisation_from(flags);
   const Overwrite overwrite = flags.force ? Overwrite::allow : Overwrite::refuse;
   check_can_write(flags.out, overwrite);
   if (!flags.field.empty()) {
@@ -123,24 +150,15 @@ int run_indent(const Arguments& arguments) {
     check_can_write(shell_field_data_path(flags.field), overwrite);
   }
 
-  // A curve takes minutes: its progress in nanometres of depth. A curve whose force stays below
-  // the window's top is simulated again, deeper (src/fe/indentation.cpp): its progress starts
-  // anew, after one line saying why, so the restart does not read as lost work.
+  // A curve takes minutes: its progress in nanometres of depth, of the deepest it may go (an
+  // automatic curve stops earlier, at the window's top: src/fe/indentation.cpp).
   const ProgressMode mode = choose_progress_mode(flags.quiet);
   std::optional<StepProgress> progress;
-  std::size_t shown = 0, shown_total = 0;
+  std::size_t shown = 0;
   const auto follow = [&](double depth, double max_depth) {
     const auto total = static_cast<std::size_t>(std::lround(max_depth * 1e9));
     const auto reached = std::min(total, static_cast<std::size_t>(std::lround(depth * 1e9)));
-    if (!progress || total != shown_total) {
-      if (progress) progress->clear();
-      if (progress && mode != ProgressMode::none) {
-        std::cerr << "indent: the force stayed below the window's top (" << format_double(options.force_window[1] * 1e6)
-                  << " uN) by " << shown_total << " nm: simulating the curve again to " << total << " nm\n";
-      }
-      progress.emplace(mode, std::cerr, "indent", "nm of depth", total);
-      shown = 0, shown_total = total;
-    }
+    if (!progress) progress.emplace(mode, std::cerr, "indent", "nm of depth", total);
     progress->advance(reached - shown);
     shown = reached;
   };
@@ -175,6 +193,17 @@ int run_indent(const Arguments& arguments) {
     print("thickness_stretch", curve.thickness_stretch);
   }
   if (curve.unstressed_thickness > 0) print("h0_nm", curve.unstressed_thickness * 1e9);
+  if (options.stabilisation.active() && !curve.strain_energy.empty()) {
+    // At the curve's deepest point: what the damping dissipated against the strain energies the
+    // fraction and the cap may be measured against.
+    const double model = curve.strain_energy.back();
+    const double step = model + curve.pressure_energy.back() - curve.strain_energy.front() - curve.pressure_energy.front();
+    print("strain_energy_pJ", model * 1e12);
+    print("stored_by_indentation_pJ", step * 1e12);
+    print("dissipated_energy_pJ", curve.dissipated_energy.back() * 1e12);
+    print("damping_factor", curve.damping_factor);
+    print("damping_lowerings", static_cast<double>(curve.damping_lowerings));
+  }
   print("points", static_cast<double>(curve.depth.size()));
   print("newton_iterations", static_cast<double>(curve.newton_iterations));
   print("seconds", curve.seconds);

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "growthuq/core/error.hpp"
+#include "growthuq/core/numbers.hpp"
 
 namespace growthuq::cli {
 
@@ -74,6 +75,11 @@ std::string describe(const ShellFeOptions& options) {
   text << ", mesh = " << to_string(options.mesh) << ", contact " << to_string(options.contact) << ", substrate " << (options.substrate ? "on" : "off") << ", bending "
        << (options.bending ? "on" : "off") << (options.half_model ? ", half model" : ", full model") << ", window "
        << format_micro(options.force_window[0]) << "-" << format_micro(options.force_window[1]) << " uN";
+  if (options.stabilisation.active()) {
+    text << ", viscous stabilisation: fraction " << format_double(options.stabilisation.fraction) << " of the "
+         << to_string(options.stabilisation.energy) << " strain energy, "
+         << (options.stabilisation.ratio > 0 ? "capped at " + format_double(options.stabilisation.ratio) : std::string("no cap"));
+  }
   return text.str();
 }
 

@@ -13,6 +13,7 @@ std::string describe(NewtonStatus status) {
     case NewtonStatus::line_search_failed: return "line search found no decrease";
     case NewtonStatus::factorisation_failed: return "Hessian not factorisable with any shift";
     case NewtonStatus::not_finite: return "non-finite energy or step";
+    case NewtonStatus::stalled: return "no progress: steps within the energy's round-off left the gradient where it was";
   }
   return "unknown";
 }
@@ -39,6 +40,7 @@ EquilibriumResult solve_equilibrium(ShellObjective& objective, NewtonSolver& sol
     const double t_next = t + dt > 1.0 - 1e-9 ? 1.0 : t + dt;
     const double step = t_next - t;
     set_loads(t_next, objective.assembly().loads());
+    objective.begin_step(x, step);
     trial = x;
     if (previous_dt > 0) trial += (step / previous_dt) * previous_move;  // linear predictor
     objective.start_step(trial);
@@ -77,8 +79,9 @@ EquilibriumResult solve_equilibrium(ShellObjective& objective, NewtonSolver& sol
     result.reached = t;
     ++result.steps;
     // Grow the step after an easy convergence, up to the cap.
-    if (report.iterations <= options.easy_iterations) dt = std::min(options.max_step, 1.5 * step);
-    else dt = std::min(options.max_step, step);
+    const double cap = std::max(options.max_step, options.relative_max_step * t);
+    if (report.iterations <= options.easy_iterations) dt = std::min(cap, 1.5 * step);
+    else dt = std::min(cap, step);
     if (on_step && !on_step(t, x)) return result;
   }
   return result;

@@ -19,6 +19,10 @@ namespace growthuq::fe {
 struct LoadSteppingOptions {
   double first_step = 0.25;  // of t
   double max_step = 0.25;
+  // Past t = max_step / relative_max_step the cap grows with the path, to this fraction of t: a
+  // path that runs on past the depth its steps were sized from (an indentation that stops at a
+  // force, not a depth) keeps a fixed number of steps per doubling of t.
+  double relative_max_step = 0.0;
   double min_step = 1.0 / 4096;
   int max_attempts = 200;    // converged steps plus failed ones
   int easy_iterations = 6;   // a step converged within these lets the next one grow 1.5 times

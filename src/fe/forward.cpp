@@ -27,7 +27,7 @@ bool finite_all(std::initializer_list<double> values) {
 // An empty string when the problem is admissible, else what is wrong (one line).
 std::string check(const ForwardProblem& p, const WallGeometry& geometry, SampleStatus& status) {
   status = SampleStatus::invalid_input;
-  if (!finite_all({p.pressure, p.thickness, p.poisson, p.probe_radius, p.max_depth})) {
+  if (!finite_all({p.pressure, p.thickness, p.poisson, p.probe_radius, p.max_depth, p.step_depth})) {
     return "non-finite input";
   }
   if (p.pressure < 0) return "pressure p/E = " + std::to_string(p.pressure) + ": expected >= 0";
@@ -41,6 +41,10 @@ std::string check(const ForwardProblem& p, const WallGeometry& geometry, SampleS
   if (!(p.max_depth >= 0 && p.max_depth <= deepest_automatic_depth)) {
     return "max depth / d0 = " + std::to_string(p.max_depth) + ": expected in [0, " +
            std::to_string(deepest_automatic_depth) + "]";
+  }
+  if (!(p.step_depth >= 0 && p.step_depth <= p.max_depth)) {
+    return "step depth / d0 = " + std::to_string(p.step_depth) + ": expected in [0, max depth " +
+           std::to_string(p.max_depth) + "]";
   }
   return geometry.check(status).value_or(std::string());
 }
@@ -196,9 +200,18 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
     assembly->loads().obstacles.planes = {RigidPlane{Eigen::Vector3d(x.row(0).minCoeff(), 0, 0), Eigen::Vector3d::UnitX()}};
   }
   const double mirror_factor = setup.half ? 2.0 : 1.0;
+  if (p.stabilisation.active()) objective->stabilise(p.stabilisation);
+  auto record_energies = [&](const Eigen::Matrix3Xd& state) {
+    const EnergyParts parts = assembly->energy(state);
+    const ViscousStabilisation* stabilisation = objective->stabilisation();
+    result.strain_energy.push_back(mirror_factor * (parts.membrane + parts.bending));
+    result.pressure_energy.push_back(mirror_factor * parts.pressure);
+    result.dissipated_energy.push_back(stabilisation ? mirror_factor * stabilisation->dissipated() : 0.0);
+  };
   result.depth = {0.0};
   result.force = {0.0};
   result.contact_radius = {0.0};
+  record_energies(x);
   bool lost = false;
   auto record = [&](double t, const Eigen::Matrix3Xd& state) {
     const RigidSphere& probe = assembly->loads().obstacles.spheres.front();
@@ -214,16 +227,23 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
     result.depth.push_back(t * p.max_depth);
     result.force.push_back(mirror_factor * contact.sphere_force.front().x());
     result.contact_radius.push_back(radius);
+    record_energies(state);
     if (!(result.force.back() > 0)) {
       lost = true;
       return false;
     }
     if (p.on_depth) p.on_depth(t * p.max_depth);
-    return true;
+    return !(p.long_enough && p.long_enough(result.depth, result.force));
   };
+  // Steps sized from the step depth (step_share of the path): the contact forms gently, then
+  // the steps grow, up to an eighth of the step depth or of the depth reached, whichever is
+  // larger (the latter only on a curve that runs on past its step depth).
+  const double step_share = p.step_depth > 0 ? p.step_depth / p.max_depth : 1.0;
   LoadSteppingOptions indentation;
-  indentation.first_step = 1.0 / 48;  // the contact forms gently, then the steps grow
-  indentation.max_step = 1.0 / 8;
+  indentation.first_step = step_share / 48;
+  indentation.max_step = step_share / 8;
+  indentation.relative_max_step = 1.0 / 8;
+  indentation.min_step = step_share / 4096;
   // A Newton step may not carry a node across the probe: the line search sees only the energy
   // at the step's end, where a wall that has jumped past the probe has none left in contact.
   indentation.newton.max_step = 0.25 * rho;
@@ -231,6 +251,11 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   // The nodal residual that is left, 1e-6 of E h0 times the shortest edge, is below 1e-5 of the
   // smallest recorded force; the contact's active set makes the last digits linear to reach.
   indentation.newton.gradient_tolerance = 1e-6;
+  if (p.stabilisation.active() && p.first_increment > 0 && p.max_depth > 0) {
+    // The driver's first increment (its damping factor is set from it), then the same growth.
+    indentation.first_step = std::min(indentation.first_step, p.first_increment / p.max_depth);
+    indentation.min_step = std::min(indentation.min_step, indentation.first_step / 16);
+  }
   EquilibriumResult indented{};
   if (p.max_depth > 0) {
     indented = solve_equilibrium(
@@ -241,6 +266,10 @@ ForwardResult run(const ForwardProblem& p, bool indent) {
   result.newton_iterations += indented.newton_iterations;
   result.load_steps = indented.steps;
   result.indentation_iterations = indented.newton_iterations;
+  if (const ViscousStabilisation* stabilisation = objective->stabilisation()) {
+    result.damping_factor = stabilisation->damping_factor();
+    result.damping_lowerings = stabilisation->lowerings();
+  }
   add_timing(*solver, *objective, result);
   fill_fields(setup, *assembly, x, result);
   if (lost) {

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,14 @@ struct ForwardProblem {            // all dimensionless
   double tube_length = 0.0;        // L/d0 (tube only)
   double probe_distance = 0.0;     // a/d0 behind the apex (tube only)
   double max_depth = 0.0;          // deepest indentation, / d0
+  // The depth the load steps are sized from (/ d0; 0: max_depth): the first a 48th of it, none
+  // larger than an eighth of it or of the depth reached. A curve that stops at a force
+  // (`long_enough`) sizes its steps from its first estimate of the depth and runs on past it.
+  double step_depth = 0.0;
+  // Called after each converged indentation step with the curve so far (depth / d0, force
+  // / (E d0^2), whole tube); true ends the curve there (status ok), short of max_depth, which
+  // then only bounds it. Unset: the curve runs to max_depth.
+  std::function<bool(std::span<const double>, std::span<const double>)> long_enough;
   // Called after each converged indentation step with its depth (/ d0), for a progress display.
   std::function<void(double)> on_depth;
   bool substrate = true;
@@ -36,6 +45,11 @@ struct ForwardProblem {            // all dimensionless
   bool half_model = true;
   ShellFeMesh mesh = ShellFeMesh::standard;
   ContactMethod contact = ContactMethod::active_set;
+  // The study's driver's viscous stabilisation of the indentation steps (viscous_stabilisation.hpp;
+  // off by default), and the depth of a stabilised indentation's first increment, from which its
+  // damping factor is set (/ d0; 0: the load stepping's own, 1/48 of the curve).
+  ShellFeStabilisation stabilisation;
+  double first_increment = 0.0;
 };
 
 // The deepest indentation (/ d0) that simulate_forward accepts, and that indent() and the inverse
@@ -56,6 +70,11 @@ struct ForwardResult {
   std::vector<double> depth;       // indentation delta / d0, starting at 0
   std::vector<double> force;       // F / (E d0^2), whole tube (half model doubled)
   std::vector<double> contact_radius;  // / d0
+  // At each depth, whole tube, / (E d0^3): the strain energy (membrane + bending), the pressure's
+  // potential -p V, and the energy the viscous stabilisation has dissipated so far (0 without it).
+  std::vector<double> strain_energy, pressure_energy, dissipated_energy;
+  double damping_factor = 0.0;     // the stabilisation's c at the end (solver units), 0 off
+  int damping_lowerings = 0;       // steps solved again with c lowered under the adaptive cap
   double turgid_diameter = 0.0;    // / d0, far from tip and ends (tube), or sphere diameter
   double axial_stretch = 0.0;      // tube only
   double thickness_stretch = 0.0;  // h/h0 there
@@ -71,7 +90,7 @@ struct ForwardResult {
   std::vector<MembraneStress> face_stress;
 };
 
-// Inflate to `pressure`, then indent to `max_depth`. A pure function of its input: no global
+// Inflate to `pressure`, then indent to `max_depth` (or until `long_enough`). A pure function of its input: no global
 // state, safe to call concurrently from several threads or processes. Never throws for a
 // numerical failure (status instead); throws InputError only for an unreadable mesh file.
 //

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <span>
 #include <string>
 
 #include "fe/force_window.hpp"
@@ -35,10 +36,10 @@ void validate_input(const IndentationInput& input, std::string_view location) {
   }
 }
 
-// Deep enough for the window's top: 1.5 times the depth at which the closed-form stiffness
-// reaches it (the finite-element curve stiffens or softens by less than that over the
-// envelope), at least 5 % of d0 and at most fe::deepest_automatic_depth.
-double automatic_depth(const IndentationInput& input, const ShellFeOptions& options) {
+// The depth an automatic curve sizes its steps from: 1.5 times the depth at which the
+// closed-form stiffness reaches the window's top, at least 5 % of d0 and at most
+// fe::deepest_automatic_depth.
+double estimated_depth(const IndentationInput& input, const ShellFeOptions& options) {
   const double d0 = input.plasmolysed_diameter;
   const auto closed = thin_shell_forward(input.pressure, input.young, input.thickness, d0, input.instrument);
   double depth = 0.2 * d0;
@@ -91,45 +92,49 @@ IndentationCurve indent(const IndentationInput& input, const ShellFeOptions& opt
   curve.unstressed_thickness = problem.thickness * d0;
 
   const bool automatic = input.depth == 0;
-  double depth = automatic ? automatic_depth(input, options) : input.depth;
   const double low = options.force_window[0], high = options.force_window[1];
-  for (int attempt = 0;; ++attempt) {
-    problem.max_depth = depth / d0;
-    if (progress) problem.on_depth = [&](double reached) { progress(reached * d0, depth); };
-    const fe::ForwardResult result = fe::simulate_forward(problem);
-    fe::curve_in_si(result, d0, E, curve);
-    if (keep_field) curve.field = fe::field_in_si(result, d0, E);
-    curve.status = result.status;
-    curve.message = result.message;
-    const fe::WindowFit fit = fe::fit_force_window(curve.depth, curve.force, low, high);
-    if (fit.status == fe::WindowFitStatus::ok) {
-      curve.stiffness = fit.slope;
-      curve.measured_stiffness = measured_stiffness(fit.slope, input.instrument);
-      // Contact radius at the window's top, interpolated as the force was.
-      for (std::size_t i = 1; i < curve.depth.size() && i < curve.contact_radius.size(); ++i) {
-        if (curve.depth[i] < fit.top_depth) continue;
-        const double t = (fit.top_depth - curve.depth[i - 1]) / (curve.depth[i] - curve.depth[i - 1]);
-        curve.window_contact_radius = curve.contact_radius[i - 1] + t * (curve.contact_radius[i] - curve.contact_radius[i - 1]);
-        break;
-      }
-      // A solver failure beyond the window's top leaves k intact: k is the value, the curve
-      // simply ends early (its status is kept in the message).
-      if (curve.status != SampleStatus::ok) {
-        curve.message = "k from the curve up to where the solver stopped (" + std::string(to_string(curve.status)) +
-                        (curve.message.empty() ? "" : ": " + curve.message) + ")";
-        curve.status = SampleStatus::ok;
-      }
+  if (automatic) {
+    // The curve runs until its force passes the window's top, bounded by
+    // fe::deepest_automatic_depth: the fit reads the curve up to its first point past the top
+    // and nothing beyond, so k is final there. Its steps are sized from the closed form's
+    // estimate of the depth, and continue past it when the estimate falls short.
+    const double top = high / (E * d0 * d0);
+    problem.max_depth = fe::deepest_automatic_depth;
+    problem.step_depth = estimated_depth(input, options) / d0;
+    problem.long_enough = [top](std::span<const double>, std::span<const double> force) { return force.back() >= top; };
+  } else {
+    problem.max_depth = input.depth / d0;
+  }
+  if (progress) problem.on_depth = [&](double reached) { progress(reached * d0, problem.max_depth * d0); };
+  const fe::ForwardResult result = fe::simulate_forward(problem);
+  ++curve.force_curves;
+  fe::curve_in_si(result, d0, E, curve);
+  if (keep_field) curve.field = fe::field_in_si(result, d0, E);
+  curve.status = result.status;
+  curve.message = result.message;
+  const fe::WindowFit fit = fe::fit_force_window(curve.depth, curve.force, low, high);
+  if (fit.status == fe::WindowFitStatus::ok) {
+    curve.stiffness = fit.slope;
+    curve.measured_stiffness = measured_stiffness(fit.slope, input.instrument);
+    // Contact radius at the window's top, interpolated as the force was.
+    for (std::size_t i = 1; i < curve.depth.size() && i < curve.contact_radius.size(); ++i) {
+      if (curve.depth[i] < fit.top_depth) continue;
+      const double t = (fit.top_depth - curve.depth[i - 1]) / (curve.depth[i] - curve.depth[i - 1]);
+      curve.window_contact_radius = curve.contact_radius[i - 1] + t * (curve.contact_radius[i] - curve.contact_radius[i - 1]);
       break;
     }
-    if (curve.status != SampleStatus::ok) break;  // the solver's own failure, before the window's top
-    if (!automatic || attempt == 2 || depth >= fe::deepest_automatic_depth * d0) {
-      curve.status = SampleStatus::window_not_reached;
-      curve.message = "the force reached " + format_double(fit.max_force * 1e6) + " uN at " +
-                      format_double(curve.depth.empty() ? 0.0 : curve.depth.back() * 1e6) + " um, below the window's top " +
-                      format_double(high * 1e6) + " uN" + (automatic ? "" : " (a larger --depth-um reaches it)");
-      break;
+    // A solver failure beyond the window's top leaves k intact: k is the value, the curve
+    // simply ends early (its status is kept in the message).
+    if (curve.status != SampleStatus::ok) {
+      curve.message = "k from the curve up to where the solver stopped (" + std::string(to_string(curve.status)) +
+                      (curve.message.empty() ? "" : ": " + curve.message) + ")";
+      curve.status = SampleStatus::ok;
     }
-    depth = std::min(2.0 * depth, fe::deepest_automatic_depth * d0);
+  } else if (curve.status == SampleStatus::ok) {  // else the solver's own failure, before the window's top
+    curve.status = SampleStatus::window_not_reached;
+    curve.message = "the force reached " + format_double(fit.max_force * 1e6) + " uN at " +
+                    format_double(curve.depth.empty() ? 0.0 : curve.depth.back() * 1e6) + " um, below the window's top " +
+                    format_double(high * 1e6) + " uN" + (automatic ? "" : " (a larger --depth-um reaches it)");
   }
   curve.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return curve;

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <string>
 
 #include "fe/far_field.hpp"
@@ -165,35 +166,35 @@ ShellFeInverse invert_indentation(const ShellFeMeasurement& m, const Instrument&
 
   const double estimate = inverse.closed_form_young > 0 ? inverse.closed_form_young : k / (0.05 * d0);
   const double low = options.force_window[0], high = options.force_window[1];
-  // Deep enough that the window's top is on the curve at the root: 1.5 times the depth at
-  // which k reaches it, within 5-60 % of d0; deepened twice if short.
-  double depth = std::clamp(1.5 * high / (k * d0), 0.05, fe::deepest_automatic_depth);
-  for (int attempt = 0;; ++attempt) {
-    problem.max_depth = depth;
-    const fe::ForwardResult result = fe::simulate_forward(problem);
-    inverse.newton_iterations += result.newton_iterations;
-    const fe::ModulusMatch match = fe::match_modulus(result.depth, result.force, k, d0, low, high, estimate);
-    if (match.status == fe::ModulusMatchStatus::ok) {
-      inverse.young = match.young;
-      inverse.pressure = inflated.pressure * match.young;
-      inverse.fitted_stiffness = match.fitted_stiffness;
-      return finish(SampleStatus::ok, result.status == SampleStatus::ok
-                                           ? ""
-                                           : "E from the curve up to where the solver stopped (" +
-                                                 std::string(to_string(result.status)) + ")");
-    }
-    if (result.status != SampleStatus::ok) {
-      return finish(result.status, "force curve: " + result.message);
-    }
-    if (match.status != fe::ModulusMatchStatus::curve_too_short) {
-      return finish(SampleStatus::no_modulus_root, "no E gives k = " + format_double(k) + " N/m over the window");
-    }
-    if (attempt == 2 || depth >= fe::deepest_automatic_depth) {
-      return finish(SampleStatus::window_not_reached, "the curve to " + format_double(depth) +
-                                                           " d0 is too short for the window at the E that k needs");
-    }
-    depth = std::min(2.0 * depth, fe::deepest_automatic_depth);
+  // One curve, run until the root in E no longer needs more of it: until the window's top at
+  // the E that k needs lies on it (k(E) reads the curve up to that top and nothing beyond, so E
+  // is final there) or there is no such E, bounded by fe::deepest_automatic_depth. Its steps
+  // are sized from 1.5 times the depth at which k reaches the window's top, within 5-60 % of
+  // d0, and continue past it.
+  problem.max_depth = fe::deepest_automatic_depth;
+  problem.step_depth = std::clamp(1.5 * high / (k * d0), 0.05, fe::deepest_automatic_depth);
+  problem.long_enough = [&](std::span<const double> depth, std::span<const double> force) {
+    return fe::match_modulus(depth, force, k, d0, low, high, estimate).status != fe::ModulusMatchStatus::curve_too_short;
+  };
+  const fe::ForwardResult result = fe::simulate_forward(problem);
+  ++inverse.force_curves;
+  inverse.newton_iterations += result.newton_iterations;
+  const fe::ModulusMatch match = fe::match_modulus(result.depth, result.force, k, d0, low, high, estimate);
+  if (match.status == fe::ModulusMatchStatus::ok) {
+    inverse.young = match.young;
+    inverse.pressure = inflated.pressure * match.young;
+    inverse.fitted_stiffness = match.fitted_stiffness;
+    return finish(SampleStatus::ok, result.status == SampleStatus::ok
+                                         ? ""
+                                         : "E from the curve up to where the solver stopped (" +
+                                               std::string(to_string(result.status)) + ")");
   }
+  if (result.status != SampleStatus::ok) return finish(result.status, "force curve: " + result.message);
+  if (match.status != fe::ModulusMatchStatus::curve_too_short) {
+    return finish(SampleStatus::no_modulus_root, "no E gives k = " + format_double(k) + " N/m over the window");
+  }
+  return finish(SampleStatus::window_not_reached, "the curve to " + format_double(problem.max_depth) +
+                                                       " d0 is too short for the window at the E that k needs");
 }
 
 }  // namespace growthuq

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 
 namespace growthuq::fe {
@@ -41,6 +42,9 @@ NewtonReport NewtonSolver::minimise(Eigen::Matrix3Xd& x, const NewtonOptions& op
   const Eigen::Index n = 3 * problem_.nodes();
   Eigen::VectorXd gradient(n), step(n), move(n);
   Eigen::Matrix3Xd trial(3, x.cols());
+  double best = std::numeric_limits<double>::infinity();  // the least stationarity so far
+  bool within_noise = false;                             // the last step was accepted only as noise
+  int stalled = 0;
   for (int iteration = 0;; ++iteration) {
     auto start = Clock::now();
     double stationarity = 0.0;
@@ -55,6 +59,17 @@ NewtonReport NewtonSolver::minimise(Eigen::Matrix3Xd& x, const NewtonOptions& op
     }
     if (stationarity <= options.gradient_tolerance) {
       report.status = NewtonStatus::converged;
+      return report;
+    }
+    // A stall: steps accepted as round-off (the energy unchanged to its last digits) while the
+    // gradient stays where it was. Near a minimum such steps are Newton's last ones and the
+    // gradient falls by orders of magnitude each; where they leave it, the iterate is stuck (the
+    // sphere's stall of src/fe/README.md section 8: steps uphill by 5e-14 to 1e-13 of the
+    // energy, the gradient the same to 4 digits, until the iteration cap).
+    stalled = within_noise && !(stationarity < 0.5 * best) ? stalled + 1 : 0;
+    best = std::min(best, stationarity);
+    if (options.max_stalled > 0 && stalled >= options.max_stalled) {
+      report.status = NewtonStatus::stalled;
       return report;
     }
     if (iteration >= options.max_iterations) {
@@ -112,9 +127,10 @@ NewtonReport NewtonSolver::minimise(Eigen::Matrix3Xd& x, const NewtonOptions& op
       problem_.make_admissible(trial, alpha);
       move = Eigen::Map<const Eigen::VectorXd>(trial.data(), n) - Eigen::Map<const Eigen::VectorXd>(x.data(), n);
       const double energy = problem_.energy(trial).value;
-      if (std::isfinite(energy) && (whole || energy <= here.value + 1e-4 * std::min(0.0, problem_.slope(move)) ||
-                                    std::fabs(energy - here.value) <= noise)) {
+      const bool decrease = energy <= here.value + 1e-4 * std::min(0.0, problem_.slope(move));
+      if (std::isfinite(energy) && (whole || decrease || std::fabs(energy - here.value) <= noise)) {
         accepted = true;
+        within_noise = !whole && !decrease;
         break;
       }
       alpha *= 0.5;

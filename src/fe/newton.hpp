@@ -50,13 +50,18 @@ struct NewtonOptions {
   double max_step = 0.25;            // largest nodal move of one iteration
   int max_line_search = 40;
   int max_shifts = 30;
+  // A step the line search accepts only because its energy change is within the round-off of
+  // the energy's terms (no sufficient decrease) is progress only if the stationarity after it
+  // falls below half the best before it; this many such steps in a row end the minimisation
+  // `stalled` (a load step then cut) instead of running on to max_iterations. 0: never.
+  int max_stalled = 3;
   // Take the first step whole (after make_admissible), without the line search: for a start
   // that is not admissible, whose energy the line search cannot compare with (a load step's
   // predicted state, which the first step makes admissible).
   bool first_step_whole = false;
 };
 
-enum class NewtonStatus { converged, max_iterations, line_search_failed, factorisation_failed, not_finite };
+enum class NewtonStatus { converged, max_iterations, line_search_failed, factorisation_failed, not_finite, stalled };
 
 struct NewtonReport {
   NewtonStatus status = NewtonStatus::max_iterations;

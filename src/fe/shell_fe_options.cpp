@@ -40,6 +40,10 @@ std::string_view to_string(ShellFeMesh mesh) {
   return "?";
 }
 
+std::string_view to_string(ShellFeStabilisationEnergy energy) {
+  return energy == ShellFeStabilisationEnergy::model ? "model" : "step";
+}
+
 std::string_view to_string(ShellFeContact contact) {
   return contact == ShellFeContact::active_set ? "active_set" : "penalty";
 }
@@ -102,6 +106,33 @@ std::array<double, 2> parse_shell_fe_force_window(std::string_view text, std::st
   return {*low * 1e-6, *high * 1e-6};
 }
 
+ShellFeStabilisationEnergy parse_shell_fe_stabilisation_energy(std::string_view text, std::string_view location,
+                                                               std::string_view key) {
+  if (text == "model") return ShellFeStabilisationEnergy::model;
+  if (text == "step") return ShellFeStabilisationEnergy::step;
+  throw_bad_value(location, key, text, "model (the model's strain energy, the inflation's included) or step (what the "
+                                       "indentation stores)");
+}
+
+void validate_stabilisation(const ShellFeStabilisation& stabilisation, std::string_view location,
+                            std::string_view fraction_key, std::string_view ratio_key) {
+  // The fraction may exceed 1: read as the share of one increment's dissipation (src/fe/README.md,
+  // "Viscous stabilisation"), the step's is that times the number of increments. The cap's ratio
+  // at 1 would let the damping take as much as the wall stores.
+  if (!(std::isfinite(stabilisation.fraction) && stabilisation.fraction >= 0.0)) {
+    throw_bad_value(location, fraction_key, format_double(stabilisation.fraction),
+                    "a non-negative dissipated-energy fraction (0: off; the commercial code's default 2e-4)");
+  }
+  if (!(std::isfinite(stabilisation.ratio) && stabilisation.ratio >= 0.0 && stabilisation.ratio < 1.0)) {
+    throw_bad_value(location, ratio_key, format_double(stabilisation.ratio),
+                    "an adaptive damping ratio in [0, 1) (0: no cap; the study's driver 0.05)");
+  }
+  if (stabilisation.ratio > 0.0 && !stabilisation.active()) {
+    throw_bad_value(location, ratio_key, format_double(stabilisation.ratio),
+                    "0 unless a stabilisation fraction above 0 is given (the cap limits a damping there is none of)");
+  }
+}
+
 void ShellFeOptions::validate(std::string_view location) const {
   if (geometry == ShellFeGeometry::file && mesh_file.empty()) {
     throw_bad_value(location, "mesh_file", "", "a closed triangulated surface file (geometry = file needs one)");
@@ -124,6 +155,7 @@ void ShellFeOptions::validate(std::string_view location) const {
     throw_bad_value(location, "force_window_uN", format_micro(low) + "," + format_micro(high),
                     "two forces 0 <= low < high in uN (default 0.4,4)");
   }
+  validate_stabilisation(stabilisation, location, "stabilisation_fraction", "stabilisation_ratio");
   if (!(inflation_tolerance >= 0.0)) {
     throw_bad_value(location, "inflation_tolerance", format_double(inflation_tolerance),
                     "a non-negative relative diameter difference (default 1e-4; inf: far field only)");

@@ -1,12 +1,21 @@
 #include "shell_fe_problem.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include "fe/far_field.hpp"
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 
 namespace growthuq::fe {
+namespace {
+
+// The study's driver's first increment of its indentation step (initialInc = 0.0005 of a step
+// whose time is the probe's depth in um: gmunglani/Chip, module.py), m: the damping factor of its
+// stabilisation is set from that increment.
+constexpr double driver_first_increment = 0.5e-9;
+
+}  // namespace
 
 ForwardProblem make_problem(const ShellFeOptions& options, double plasmolysed_diameter, double probe_radius,
                             double poisson) {
@@ -23,6 +32,8 @@ ForwardProblem make_problem(const ShellFeOptions& options, double plasmolysed_di
   problem.half_model = options.half_model;
   problem.contact = options.contact;
   problem.mesh = options.mesh;
+  problem.stabilisation = options.stabilisation;
+  if (options.stabilisation.active()) problem.first_increment = driver_first_increment / plasmolysed_diameter;
   return problem;
 }
 
@@ -40,13 +51,19 @@ double far_field_unstressed_thickness(ShellFeLaw law, double pressure_over_young
 }
 
 void curve_in_si(const ForwardResult& result, double d0, double young, IndentationCurve& curve) {
-  const double force_scale = young * d0 * d0;
-  curve.depth.clear();
-  curve.force.clear();
-  curve.contact_radius.clear();
-  for (double delta : result.depth) curve.depth.push_back(delta * d0);
-  for (double force : result.force) curve.force.push_back(force * force_scale);
-  for (double radius : result.contact_radius) curve.contact_radius.push_back(radius * d0);
+  const double force_scale = young * d0 * d0, energy_scale = force_scale * d0;
+  const auto scaled = [](const std::vector<double>& from, double scale, std::vector<double>& to) {
+    to.clear();
+    for (double value : from) to.push_back(value * scale);
+  };
+  scaled(result.depth, d0, curve.depth);
+  scaled(result.force, force_scale, curve.force);
+  scaled(result.contact_radius, d0, curve.contact_radius);
+  scaled(result.strain_energy, energy_scale, curve.strain_energy);
+  scaled(result.pressure_energy, energy_scale, curve.pressure_energy);
+  scaled(result.dissipated_energy, energy_scale, curve.dissipated_energy);
+  curve.damping_factor = result.damping_factor;
+  curve.damping_lowerings = result.damping_lowerings;
   curve.turgid_diameter = result.turgid_diameter * d0;
   curve.axial_stretch = result.axial_stretch;
   curve.thickness_stretch = result.thickness_stretch;

@@ -14,6 +14,9 @@ double magnitude(const EnergyParts& parts) {
          std::fabs(parts.contact) + std::fabs(parts.point_loads);
 }
 
+double strain(const EnergyParts& parts) { return parts.membrane + parts.bending; }
+double stored(const EnergyParts& parts) { return parts.membrane + parts.bending + parts.pressure; }
+
 }  // namespace
 
 ShellObjective::ShellObjective(ShellAssembly& assembly, ContactOptions options)
@@ -24,6 +27,12 @@ ShellObjective::ShellObjective(ShellAssembly& assembly, ContactOptions options)
 EnergyValue ShellObjective::linearise(const Eigen::Matrix3Xd& x, Eigen::VectorXd& gradient,
                                       Eigen::SparseMatrix<double>& hessian, double& stationarity) {
   const EnergyParts parts = assembly_.evaluate(x, gradient_, &hessian, &contact_seconds_);
+  double viscous = 0.0;
+  if (stabilisation_) {
+    viscous = stabilisation_->energy(x);
+    stabilisation_->add_gradient(x, gradient_);
+    stabilisation_->add_hessian(hessian);
+  }
   gradient = gradient_;
   const double scale = assembly_.force_scale();
   const Obstacles& obstacles = assembly_.loads().obstacles;
@@ -38,12 +47,24 @@ EnergyValue ShellObjective::linearise(const Eigen::Matrix3Xd& x, Eigen::VectorXd
                ? std::max(options_.penetration_floor, 1.5 * assembly_.contact_state(x).max_penetration)
                : 0.0;
   }
-  return {parts.total(), magnitude(parts)};
+  return {parts.total() + viscous, magnitude(parts) + viscous};
 }
 
 EnergyValue ShellObjective::energy(const Eigen::Matrix3Xd& x) const {
   const EnergyParts parts = assembly_.energy(x);
-  return {parts.total(), magnitude(parts)};
+  const double viscous = stabilisation_ ? stabilisation_->energy(x) : 0.0;
+  return {parts.total() + viscous, magnitude(parts) + viscous};
+}
+
+void ShellObjective::stabilise(const ShellFeStabilisation& options) {
+  const ShellProblem& problem = assembly_.problem();
+  stabilisation_.emplace(options, lumped_masses(problem.mesh, problem.material.thickness), problem.fixed);
+}
+
+void ShellObjective::begin_step(const Eigen::Matrix3Xd& x, double step) {
+  if (!stabilisation_) return;
+  const EnergyParts parts = assembly_.energy(x);
+  stabilisation_->begin_step(x, step, strain(parts), stored(parts));
 }
 
 void ShellObjective::to_nodal(Eigen::VectorXd& step) const {
@@ -83,9 +104,14 @@ void ShellObjective::start_step(Eigen::Matrix3Xd& x) const {
 }
 
 bool ShellObjective::accept(const Eigen::Matrix3Xd& x, int raises, std::string& failure) {
-  if (options_.method == ContactMethod::active_set || options_.penetration_tolerance <= 0) return true;
+  const auto stabilised = [&] {
+    if (!stabilisation_) return true;
+    const EnergyParts parts = assembly_.energy(x);
+    return stabilisation_->accept(x, strain(parts), stored(parts));
+  };
+  if (options_.method == ContactMethod::active_set || options_.penetration_tolerance <= 0) return stabilised();
   const double penetration = assembly_.contact_state(x).max_penetration;
-  if (penetration <= options_.penetration_tolerance) return true;
+  if (penetration <= options_.penetration_tolerance) return stabilised();
   if (raises >= options_.max_penalty_raises) {
     failure = "penetration " + std::to_string(penetration) + " above tolerance after " + std::to_string(raises) +
               " penalty raises";
@@ -100,6 +126,8 @@ ContactState ShellObjective::contact_state(const Eigen::Matrix3Xd& x) {
   if (options_.method == ContactMethod::penalty) return assembly_.contact_state(x);
   const Obstacles& obstacles = assembly_.loads().obstacles;
   assembly_.evaluate(x, gradient_, nullptr);
+  // The viscous force resists the probe as the wall's own does: the reaction includes it.
+  if (stabilisation_) stabilisation_->add_gradient(x, gradient_);
   active_set_.select(obstacles, x, gradient_);
   const ContactReaction reaction = active_set_.reaction(obstacles, x);
   ContactState state;

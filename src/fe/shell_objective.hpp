@@ -11,6 +11,7 @@
 #include "fe/active_set_contact.hpp"
 #include "fe/assembly.hpp"
 #include "fe/newton.hpp"
+#include "fe/viscous_stabilisation.hpp"
 #include "growthuq/fe/indentation.hpp"
 
 namespace growthuq::fe {
@@ -54,12 +55,18 @@ class ShellObjective final : public NewtonProblem {
   double slope(const Eigen::VectorXd& move) const override { return gradient_.dot(move); }
   void make_admissible(Eigen::Matrix3Xd& trial, double fraction) const override;
 
+  // The driver's viscous stabilisation (viscous_stabilisation.hpp) of the load steps from now on:
+  // its potential joins the energy, its force the obstacles' reaction.
+  void stabilise(const ShellFeStabilisation& options);
+  const ViscousStabilisation* stabilisation() const { return stabilisation_ ? &*stabilisation_ : nullptr; }
+  // A load step of `step` (in the path's parameter) begins from the converged state x.
+  void begin_step(const Eigen::Matrix3Xd& x, double step);
   // The start of a load step from a predicted state: nodes put out of the obstacles (active
   // set), or into the penalty's band (penalty).
   void start_step(Eigen::Matrix3Xd& x) const;
   // After a converged step: false when the solution must be tightened and solved again (the
-  // penalty raised because a node is deeper than the tolerance); `failure` says why when it can
-  // no longer be.
+  // penalty raised because a node is deeper than the tolerance, or the stabilisation's damping
+  // lowered under its cap); `failure` says why when it can no longer be.
   bool accept(const Eigen::Matrix3Xd& x, int raises, std::string& failure);
   // Forces of the wall on the obstacles and the deepest penetration at a solution.
   ContactState contact_state(const Eigen::Matrix3Xd& x);
@@ -69,6 +76,7 @@ class ShellObjective final : public NewtonProblem {
   ShellAssembly& assembly_;
   ContactOptions options_;
   ActiveSetContact active_set_;
+  std::optional<ViscousStabilisation> stabilisation_;
   Eigen::VectorXd gradient_;  // of the energy at the last linearised state
   double cap_ = 0.0;          // penalty: the line search's penetration cap
   double contact_seconds_ = 0.0;

@@ -1,6 +1,8 @@
 // Benchmark of the finite-element shell model on one core: one forward curve and one inverse
-// sample at an Arabidopsis-like tube, with the share of time in assembly, factorisation and
-// contact. Run by tools/bench/bench-fe; prints `name = value` lines.
+// sample at an Arabidopsis-like tube (probe radius --rho-um, default 0.25), with the share of
+// time in assembly, factorisation and contact. Run by tools/bench/bench-fe, bench-fe-contact and
+// bench-fe-wide (which also compiles it against an earlier commit's library: public API only,
+// as that commit has it); prints `name = value` lines.
 #include <algorithm>
 #include <cstdlib>
 #include <iostream>
@@ -26,13 +28,15 @@ ShellFeMesh mesh_from(const std::string& text) {
 int main(int argc, char** argv) {
   ShellFeOptions options;
   int repetitions = 1;
+  double rho_um = 0.25;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i], value = argv[i + 1];
     if (flag == "--mesh") options.mesh = mesh_from(value);
     else if (flag == "--repetitions") repetitions = std::atoi(value.c_str());
     else if (flag == "--contact") options.contact = parse_shell_fe_contact(value, "bench_fe", "--contact");
+    else if (flag == "--rho-um") rho_um = std::atof(value.c_str());
     else {
-      std::cerr << "bench_fe: unknown option " << flag << " (--mesh coarse|default|fine|finer, --contact active_set|penalty, --repetitions N)\n";
+      std::cerr << "bench_fe: unknown option " << flag << " (--mesh coarse|default|fine|finer, --contact active_set|penalty, --rho-um RHO, --repetitions N)\n";
       return 2;
     }
   }
@@ -43,7 +47,11 @@ int main(int argc, char** argv) {
   input.young = 45e6;
   input.thickness = 200e-9;
   input.plasmolysed_diameter = 5.35e-6;
-  input.instrument.probe_radius_m = 0.25e-6;
+  input.instrument.probe_radius_m = rho_um * 1e-6;
+  if (!(input.instrument.probe_radius_m > 0)) {
+    std::cerr << "bench_fe: --rho-um " << rho_um << ": expected a positive probe radius in um\n";
+    return 2;
+  }
 
   std::vector<double> forward_cpu, inverse_cpu;
   IndentationCurve curve;
@@ -63,6 +71,7 @@ int main(int argc, char** argv) {
   }
   std::cout << "mesh = " << to_string(options.mesh) << "\n";
   std::cout << "contact = " << to_string(options.contact) << "\n";
+  print("rho_um", rho_um);
   print("forward_cpu_seconds", bench::median(forward_cpu));
   print("forward_wall_seconds", curve.seconds);
   print("forward_points", static_cast<double>(curve.depth.size()));
@@ -80,6 +89,7 @@ int main(int argc, char** argv) {
   print("seconds_per_factorisation", curve.seconds_factorisation / std::max(1, curve.factorisations));
   print("k_N_per_m", curve.stiffness);
   print("inverse_cpu_seconds", bench::median(inverse_cpu));
+  print("inverse_wall_seconds", inverse.seconds);
   print("inverse_inflation_solves", inverse.inflation_solves);
   print("inverse_newton_iterations", inverse.newton_iterations);
   print("inverse_far_field_diameter_error", inverse.far_field_diameter_error);

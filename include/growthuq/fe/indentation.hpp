@@ -38,6 +38,9 @@ struct ShellFeOptions {
   bool half_model = true;               // mirror plane through the tube axis and the probe axis
   ShellFeMesh mesh = ShellFeMesh::standard;
   ShellFeContact contact = ShellFeContact::active_set;
+  // The study's driver's viscous stabilisation of the indentation (shell_fe_vocabulary.hpp): an
+  // ablation of its choice, set by `growthuq indent` only, never by a campaign.
+  ShellFeStabilisation stabilisation;
   std::array<double, 2> force_window{0.4e-6, 4e-6};  // k is fitted over F in this window, N
   // Inverse: refine the far-field inflation with finite-element inflation of the mesh when the
   // turgid diameters differ by more than this (relative); 0 always refines, inf never.
@@ -45,7 +48,7 @@ struct ShellFeOptions {
 
   // Throws InputError("<location>", "<key> = '<value>': expected <range>") for the first bad
   // option; keys: law, geometry, mesh_file, tube_length_um, probe_distance_um, mesh,
-  // force_window_uN.
+  // force_window_uN, stabilisation_fraction, stabilisation_ratio.
   void validate(std::string_view location) const;
 };
 
@@ -53,6 +56,7 @@ std::string_view to_string(ShellFeLaw);       // "log", "stvk"
 std::string_view to_string(ShellFeGeometry);  // "tube", "sphere", "file"
 std::string_view to_string(ShellFeMesh);      // "coarse", "default", "fine", "finer"
 std::string_view to_string(ShellFeContact);   // "active_set", "penalty"
+std::string_view to_string(ShellFeStabilisationEnergy);  // "model", "step"
 // The option's value from its text as typed (a campaign's [shell_fe] value or a command's flag,
 // one parser and one message for both); InputError("<location>", "<key> = '<text>': expected
 // ...") otherwise.
@@ -60,6 +64,12 @@ ShellFeLaw parse_shell_fe_law(std::string_view text, std::string_view location, 
 ShellFeGeometry parse_shell_fe_geometry(std::string_view text, std::string_view location, std::string_view key);
 ShellFeMesh parse_shell_fe_mesh(std::string_view text, std::string_view location, std::string_view key);
 ShellFeContact parse_shell_fe_contact(std::string_view text, std::string_view location, std::string_view key);
+ShellFeStabilisationEnergy parse_shell_fe_stabilisation_energy(std::string_view text, std::string_view location,
+                                                               std::string_view key);
+// The stabilisation's fraction >= 0 and ratio in [0, 1), the ratio 0 unless the fraction is above 0;
+// InputError naming `fraction_key` or `ratio_key` (a flag's name or the option's) otherwise.
+void validate_stabilisation(const ShellFeStabilisation& stabilisation, std::string_view location,
+                            std::string_view fraction_key, std::string_view ratio_key);
 bool parse_shell_fe_switch(std::string_view text, std::string_view location, std::string_view key);  // on | off
 // um in [5, 1e6] -> m.
 double parse_shell_fe_tube_length(std::string_view text, std::string_view location, std::string_view key);
@@ -89,7 +99,7 @@ struct IndentationInput {
   double thickness = 0.0;             // m, see thickness_kind
   ThicknessKind thickness_kind = ThicknessKind::turgid;
   double plasmolysed_diameter = 0.0;  // d0 (unstressed), m
-  double depth = 0.0;                 // deepest indentation, m; 0: deep enough for the window's top
+  double depth = 0.0;                 // deepest indentation, m; 0: until the force passes the window's top
   Instrument instrument;     // probe radius rho, Poisson ratio nu (k_sys: the k reported
                                       // is the tube's, as the sensor measures it in series)
 };
@@ -110,6 +120,12 @@ struct IndentationCurve {
   std::vector<double> depth;             // indentation delta, m, from 0
   std::vector<double> force;             // probe force, whole tube, N
   std::vector<double> contact_radius;    // m
+  // At each depth, J: strain energy (membrane + bending), the pressure's potential -p V, and the
+  // energy the viscous stabilisation dissipated so far (0 without it). Whole tube.
+  std::vector<double> strain_energy, pressure_energy, dissipated_energy;
+  double damping_factor = 0.0;           // the stabilisation's c (solver units: / E d0, per unit of the
+                                         // step's time, the whole indentation being 1), 0 off
+  int damping_lowerings = 0;             // steps solved again with c lowered under the adaptive cap
   double stiffness = 0.0;                // k over the force window, N/m (tube alone)
   double measured_stiffness = 0.0;       // k in series with the sensor, N/m
   double turgid_diameter = 0.0;          // far from tip and ends (tube), the sphere's otherwise, m
@@ -120,18 +136,21 @@ struct IndentationCurve {
   int newton_iterations = 0;             // inflation and indentation
   int indentation_load_steps = 0;        // converged steps of the probe
   int indentation_newton_iterations = 0;
+  int force_curves = 0;                  // indentations simulated (inflation included): 1
   double seconds = 0.0;                  // wall time of the whole call
   double seconds_assembly = 0.0, seconds_factorisation = 0.0, seconds_contact = 0.0;
   int factorisations = 0;                // sparse Cholesky factorisations, shifted retries included
   ShellFeField field;                    // empty unless asked for
 };
 
-// Progress of indent(): after each converged indentation step, its depth and the depth the
-// curve is going to (m). A deepened curve starts again from 0 towards its new depth.
+// Progress of indent(): after each converged indentation step, its depth and the deepest the
+// curve may go (m): the depth asked for, or fe::deepest_automatic_depth (0.6 d0) for a curve that
+// stops at the window's top.
 using IndentationProgress = std::function<void(double depth, double max_depth)>;
 
-// One forward simulation: inflate to p, indent to `input.depth` (or, when 0, deep enough for
-// the force window's top, deepened up to twice if the first depth fell short), fit k.
+// One forward simulation: inflate to p, indent to `input.depth` (or, when 0, until the force
+// passes the window's top, at most 0.6 d0: one curve, its steps sized from the closed form's
+// estimate of the depth and continued past it), fit k.
 // `keep_field` fills `field` with the final state; `progress`, if given, follows the
 // indentation. Throws InputError only for invalid input or options and an unreadable mesh
 // file; a numerical failure is a status.
@@ -160,6 +179,7 @@ struct ShellFeInverse {
   double closed_form_young = 0.0;     // the thin-shell inverse's E (the root's first estimate), Pa
   double fitted_stiffness = 0.0;      // k of the model at (p, E) over the window, N/m
   int newton_iterations = 0;
+  int force_curves = 0;               // indentations simulated: 1 (0 when it stopped before)
   double seconds = 0.0;
 };
 
