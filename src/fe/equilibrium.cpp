@@ -55,7 +55,6 @@ EquilibriumResult solve_equilibrium(ShellObjective& objective, NewtonSolver& sol
         last_failure = failure;
         break;
       }
-      ++result.penalty_raises;
       report = solver.minimise(trial, options.newton);
       result.newton_iterations += report.iterations;
       converged = report.status == NewtonStatus::converged;

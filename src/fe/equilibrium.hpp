@@ -33,7 +33,7 @@ struct EquilibriumResult {
   SampleStatus status = SampleStatus::ok;
   std::string message;
   double reached = 0.0;  // last converged load parameter
-  int steps = 0, cuts = 0, newton_iterations = 0, penalty_raises = 0;
+  int steps = 0, cuts = 0, newton_iterations = 0;
 };
 
 // `set_loads(t, loads)` sets the loads of parameter t (it must leave loads.penalty alone: the

@@ -107,7 +107,6 @@ IndentationCurve indent(const IndentationInput& input, const ShellFeOptions& opt
   }
   if (progress) problem.on_depth = [&](double reached) { progress(reached * d0, problem.max_depth * d0); };
   const fe::ForwardResult result = fe::simulate_forward(problem);
-  ++curve.force_curves;
   fe::curve_in_si(result, d0, E, curve);
   if (keep_field) curve.field = fe::field_in_si(result, d0, E);
   curve.status = result.status;

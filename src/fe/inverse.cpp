@@ -177,7 +177,6 @@ ShellFeInverse invert_indentation(const ShellFeMeasurement& m, const Instrument&
     return fe::match_modulus(depth, force, k, d0, low, high, estimate).status != fe::ModulusMatchStatus::curve_too_short;
   };
   const fe::ForwardResult result = fe::simulate_forward(problem);
-  ++inverse.force_curves;
   inverse.newton_iterations += result.newton_iterations;
   const fe::ModulusMatch match = fe::match_modulus(result.depth, result.force, k, d0, low, high, estimate);
   if (match.status == fe::ModulusMatchStatus::ok) {

@@ -136,7 +136,6 @@ struct IndentationCurve {
   int newton_iterations = 0;             // inflation and indentation
   int indentation_load_steps = 0;        // converged steps of the probe
   int indentation_newton_iterations = 0;
-  int force_curves = 0;                  // indentations simulated (inflation included): 1
   double seconds = 0.0;                  // wall time of the whole call
   double seconds_assembly = 0.0, seconds_factorisation = 0.0, seconds_contact = 0.0;
   int factorisations = 0;                // sparse Cholesky factorisations, shifted retries included
@@ -179,7 +178,6 @@ struct ShellFeInverse {
   double closed_form_young = 0.0;     // the thin-shell inverse's E (the root's first estimate), Pa
   double fitted_stiffness = 0.0;      // k of the model at (p, E) over the window, N/m
   int newton_iterations = 0;
-  int force_curves = 0;               // indentations simulated: 1 (0 when it stopped before)
   double seconds = 0.0;
 };
 
