@@ -137,7 +137,7 @@ CorrectedInverse corrected_inverse(double k_measured, const TubeDiameters& diame
     return result;
   }
   const std::array<double, correction_terms> phi = basis(z);
-  result.E = modulus.E * std::exp(polynomial(correction.modulus, phi));
+  result.E = modulus.E * std::exp(polynomial(correction.modulus, phi) + correction.modulus_residual.value(z));
   result.p = result.E * far.pressure_over_E * std::exp(polynomial(correction.pressure_ratio, phi));
   return result;
 }
@@ -183,7 +183,7 @@ void CorrectedTurgorModulus::evaluate(SampleBlock& block) const {
 }
 
 Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOptions& options, double poisson_ratio,
-                          int held_out_fold) {
+                          int held_out_fold, const KrigingHyperparameters* hyperparameters) {
   Correction correction;
   correction.law = options.law;
   correction.substrate = options.substrate;
@@ -262,6 +262,18 @@ Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOp
     correction.modulus[t] = modulus_coefficients(static_cast<Eigen::Index>(t));
     correction.pressure_ratio[t] = ratio_coefficients(static_cast<Eigen::Index>(t));
   }
+  // The modulus polynomial's residual, interpolated (residual_kriging.hpp): one polynomial over
+  // the envelope leaves a few percent (src/correction/README.md, "Training data and fit").
+  std::vector<double> centres, residuals;
+  for (std::size_t r = 0; r < rows; ++r) {
+    std::array<double, correction_groups> z{};
+    scaled(groups[r], correction, z);
+    centres.insert(centres.end(), z.begin(), z.end());
+    residuals.push_back(modulus_target[r] - polynomial(correction.modulus, basis(z)));
+  }
+  correction.modulus_residual =
+      fit_kriging(centres, correction_groups, residuals,
+                  hyperparameters ? *hyperparameters : likeliest_hyperparameters(centres, correction_groups, residuals));
   correction.training_points = static_cast<int>(rows);
   correction.max_stiffness = correction_max_stiffness;
   correction.max_probe_over_bending_length = widest_probe;

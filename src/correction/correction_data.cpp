@@ -1,8 +1,10 @@
 // The correction's data: the training CSV it is fitted from, the C++ text `growthuq
 // fit-correction` writes, and the shipped correction compiled from that text.
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <map>
+#include <span>
 #include <string>
 
 #include "growthuq/core/error.hpp"
@@ -21,10 +23,19 @@ std::string number(double value) {
   return text.data();
 }
 
-template <std::size_t N>
-std::string list(const std::array<double, N>& values) {
+std::string list(std::span<const double> values) {
   std::string text = "{";
-  for (std::size_t i = 0; i < N; ++i) text += (i ? ", " : "") + number(values[i]);
+  for (std::size_t i = 0; i < values.size(); ++i) text += (i ? ", " : "") + number(values[i]);
+  return text + "}";
+}
+
+// A long list one row of `width` numbers per line (the kriging's centres: one per line).
+std::string rows_of(std::span<const double> values, std::size_t width) {
+  std::string text = "{\n";
+  for (std::size_t i = 0; i < values.size(); i += width) {
+    for (std::size_t j = i; j < std::min(i + width, values.size()); ++j) text += number(values[j]) + ", ";
+    text += "\n";
+  }
   return text + "}";
 }
 
@@ -136,6 +147,12 @@ std::string correction_source(const Correction& c) {
   text += "c.max_probe_over_bending_length = " + number(c.max_probe_over_bending_length) + ";\n";
   text += "c.modulus = " + list(c.modulus) + ";\n";
   text += "c.pressure_ratio = " + list(c.pressure_ratio) + ";\n";
+  const ResidualKriging& g = c.modulus_residual;
+  text += "c.modulus_residual.length_scales = " + list(g.length_scales) + ";\n";
+  text += "c.modulus_residual.signal_sd = " + number(g.signal_sd) + ";\n";
+  text += "c.modulus_residual.noise_sd = " + number(g.noise_sd) + ";\n";
+  text += "c.modulus_residual.centres = " + rows_of(g.centres, std::max<std::size_t>(1, g.length_scales.size())) + ";\n";
+  text += "c.modulus_residual.weights = " + rows_of(g.weights, 4) + ";\n";
   text += "c.training_points = " + std::to_string(c.training_points) + ";\n";
   return text;
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "correction/kriging_fit.hpp"
 #include "growthuq/correction/corrected_closed_form.hpp"
 
 namespace growthuq {
@@ -63,10 +64,12 @@ inline constexpr double correction_max_stiffness = 20.0;  // N/m
 inline bool in_training_envelope(const TrainingPoint& point) { return point.ok && point.k <= correction_max_stiffness; }
 
 // Least-squares fit of both polynomials to the fitting rows (in the envelope and not in the
-// held-out fold) for the model options the data were made with. InputError when fewer rows than
-// twice the terms remain.
+// held-out fold) for the model options the data were made with, then the kriging of the modulus
+// polynomial's residual, with `hyperparameters` or (null) the likeliest for these rows.
+// InputError when fewer rows than twice the terms remain.
 Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOptions& options, double poisson_ratio,
-                          int held_out_fold = correction_folds - 1);
+                          int held_out_fold = correction_folds - 1,
+                          const KrigingHyperparameters* hyperparameters = nullptr);
 
 // The C++ text of shipped_correction.inc for `correction` (every number to 17 digits).
 std::string correction_source(const Correction& correction);

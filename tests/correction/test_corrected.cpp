@@ -52,6 +52,16 @@ TEST_CASE("the shipped correction is the fit of the shipped training data") {
     CHECK(shipped.low[g] == doctest::Approx(refit.low[g]).epsilon(1e-14));
     CHECK(shipped.high[g] == doctest::Approx(refit.high[g]).epsilon(1e-14));
   }
+  // The kriging of the modulus residual: the same centres, and the same values at them (its
+  // hyperparameters come from a simplex search whose last digits may differ between builds).
+  const ResidualKriging& kriging = shipped.modulus_residual;
+  REQUIRE(kriging.size() == refit.modulus_residual.size());
+  REQUIRE(kriging.size() == static_cast<std::size_t>(shipped.training_points));
+  for (std::size_t c = 0; c < kriging.size(); c += 7) {
+    CAPTURE(c);
+    const std::span<const double> z(&kriging.centres[c * correction_groups], correction_groups);
+    CHECK(kriging.value(z) == doctest::Approx(refit.modulus_residual.value(z)).epsilon(1e-6).scale(1.0));
+  }
 }
 
 TEST_CASE("the kept curves are the ones k was measured on: the default window's k read back from them") {
@@ -77,9 +87,11 @@ TEST_CASE("the kept curves are the ones k was measured on: the default window's 
   for (const TrainingPoint& point : points) CHECK(std::find(windows.begin(), windows.end(), point.window) != windows.end());
 }
 
-TEST_CASE("held-out finite-element tubes: corrected p and E within 2 %, where the closed form misses by far more") {
-  int inside = 0;
-  double worst_p = 0, worst_E = 0, worst_closed_E = 0;
+TEST_CASE("held-out finite-element tubes: corrected p and E mostly within 2 %, where the closed form misses by far more") {
+  // The held-out fold (never fitted) over the whole envelope, every window. The figures the
+  // fit gives (src/correction/README.md, "Error") with a margin: a worse refit fails here.
+  int inside = 0, within = 0;
+  double sum_squares = 0, closed_sum_squares = 0;
   for (const TrainingPoint& point : shipped_training()) {
     if (!in_training_envelope(point) || !held_out(point)) continue;
     const CorrectedInverse result =
@@ -88,17 +100,18 @@ TEST_CASE("held-out finite-element tubes: corrected p and E within 2 %, where th
     if (result.status == SampleStatus::outside_correction) continue;  // beyond the fitted tubes' range
     REQUIRE(result.status == SampleStatus::ok);
     ++inside;
-    CAPTURE(point.index);
-    CHECK(result.p == doctest::Approx(point.p).epsilon(0.02));
-    CHECK(result.E == doctest::Approx(point.E).epsilon(0.02));
-    worst_p = std::max(worst_p, std::abs(result.p / point.p - 1));
-    worst_E = std::max(worst_E, std::abs(result.E / point.E - 1));
-    worst_closed_E = std::max(worst_closed_E, std::abs(result.closed_form_E / point.E - 1));
+    const double error = std::max(std::abs(result.p / point.p - 1), std::abs(result.E / point.E - 1));
+    within += error <= 0.02 ? 1 : 0;
+    sum_squares += error * error;
+    closed_sum_squares += std::pow(result.closed_form_E / point.E - 1, 2);
   }
-  MESSAGE("held-out tubes inside the fitted range: ", inside, "; worst corrected p ", worst_p, ", E ", worst_E,
-          "; worst closed-form E ", worst_closed_E);
-  CHECK(inside >= 10);
-  CHECK(worst_closed_E > 0.2);  // what the correction is for
+  const double rms = std::sqrt(sum_squares / inside), closed_rms = std::sqrt(closed_sum_squares / inside);
+  MESSAGE("held-out tubes and windows inside the fitted range: ", inside, "; within 2 % ", within, "; rms ", rms,
+          "; closed-form E rms ", closed_rms);
+  CHECK(inside >= 250);
+  CHECK(within >= 0.75 * inside);
+  CHECK(rms < 0.025);
+  CHECK(closed_rms > 20 * rms);  // what the correction is for
 }
 
 TEST_CASE("a training row is one finite-element inverse: a held-out tube inverted by the model itself") {
@@ -133,17 +146,20 @@ TEST_CASE("outside the fitted range no value; the closed form's statuses pass th
   CHECK(corrected_inverse(k, diameters_in_si(1.9 * d0, d0), h, instrument, default_window, correction).status == SampleStatus::outside_correction);
   CHECK(corrected_inverse(k, middle, 20e-9, instrument, default_window, correction).status == SampleStatus::outside_correction);
   CHECK(corrected_inverse(1000.0, middle, h, instrument, default_window, correction).status == SampleStatus::outside_correction);
-  // Stiffer than the fitted tubes (k > 10 N/m) though every group lies inside its range: a narrow
-  // tube (d0 = 4 um) at 12 N/m has w = 0.083, inside; at 9 N/m it gets a value.
+  // Stiffer than the fitted tubes (k > 20 N/m) though every group lies inside its range: a narrow
+  // tube (d0 = 4 um) at 22 N/m has w = 0.045, inside; at 19 N/m it gets a value.
+  REQUIRE(correction.max_stiffness == 20.0);
   const TubeDiameters narrow = diameters_in_si(1.18 * 4e-6, 4e-6);
-  CHECK(corrected_inverse(9.0, narrow, h, instrument, default_window, correction).status == SampleStatus::ok);
-  CHECK(corrected_inverse(12.0, narrow, h, instrument, default_window, correction).status == SampleStatus::outside_correction);
-  // A probe wider than the bending length sqrt(h d0 / 2) = 0.69 um, though every group lies inside
-  // its range (rho/d0 0.13, h/d0 0.034): no training tube had one.
+  CHECK(corrected_inverse(19.0, narrow, h, instrument, default_window, correction).status == SampleStatus::ok);
+  CHECK(corrected_inverse(22.0, narrow, h, instrument, default_window, correction).status == SampleStatus::outside_correction);
+  // A probe wider, in bending lengths sqrt(h d0 / 2) (0.69 um here), than the widest fitted one,
+  // though every group lies inside its range (rho/d0 up to 0.45 here): no training tube had one.
+  const double widest = correction.max_probe_over_bending_length * std::sqrt(h * d0 / 2);
+  REQUIRE(widest / d0 < 0.47);
   Instrument wide_probe = instrument;
-  wide_probe.probe_radius_m = 0.67e-6;
+  wide_probe.probe_radius_m = 0.98 * widest;
   CHECK(corrected_inverse(k, middle, h, wide_probe, default_window, correction).status == SampleStatus::ok);
-  wide_probe.probe_radius_m = 0.71e-6;
+  wide_probe.probe_radius_m = 1.02 * widest;
   CHECK(corrected_inverse(k, middle, h, wide_probe, default_window, correction).status == SampleStatus::outside_correction);
   Instrument big_probe = instrument;
   big_probe.probe_radius_m = 5e-6;

@@ -13,8 +13,9 @@
 // window's bottom over its top (0.1 for the default 0.4-4 uN; a window set relative to the
 // curve's largest force, such as 10-90 %, gives 1/9 whatever the force).
 // The correction is two polynomials in the logarithms of these groups (each scaled onto [-1, 1]
-// over the training data), a full quadratic plus the cubic terms that contain s:
-//   E       = E_closed_form * exp(c_E(z))
+// over the training data), a full quadratic plus the cubic terms that contain s, and for the
+// modulus a kriging interpolant of what its polynomial leaves (residual_kriging.hpp):
+//   E       = E_closed_form * exp(c_E(z) + g_E(z))
 //   p / E   = (p/E)_far_field * exp(c_pE(z))
 // where (p/E)_far_field is the model's own far-field inflation inverted exactly (the log law:
 // src/fe/README.md, section 2) and c_pE is the small correction of the meshed tube's inflation.
@@ -26,6 +27,7 @@
 #include <string_view>
 #include <vector>
 
+#include "growthuq/correction/residual_kriging.hpp"
 #include "growthuq/evaluation/evaluator.hpp"
 #include "growthuq/fe/indentation.hpp"
 #include "growthuq/mechanics/instrument.hpp"
@@ -54,6 +56,7 @@ struct Correction {
   double max_probe_over_bending_length = 1.0;   // rho / sqrt(h d0 / 2), turgid h: the widest fitted
   std::array<double, correction_terms> modulus{};         // c_E
   std::array<double, correction_terms> pressure_ratio{};  // c_pE
+  ResidualKriging modulus_residual;                       // g_E, over the scaled groups z
   int training_points = 0;
 };
 
