@@ -20,18 +20,24 @@ namespace {
 constexpr std::string_view command = "growthuq fit-correction";
 constexpr std::string_view usage = "[--training FILE] [--curves FILE] [--out FILE.inc] [--errors FILE.csv] [--force]";
 
+// generate-training's packed curves of TABLE.csv: TABLE_curves.csv.
+std::string curves_beside(const std::string& training) {
+  const std::string_view suffix = ".csv";
+  const bool csv = training.size() >= suffix.size() && training.ends_with(suffix);
+  return (csv ? training.substr(0, training.size() - suffix.size()) : training) + "_curves.csv";
+}
+
 }  // namespace
 
 int run_fit_correction(const Arguments& arguments) {
-  std::string training = "src/correction/training.csv", curves = "src/correction/training_curves.csv",
-              out = "src/correction/shipped_correction.inc", errors;
+  std::string training = "src/correction/training.csv", curves, out = "src/correction/shipped_correction.inc", errors;
   bool force = false;
   po::options_description described("options");
   described.add_options()
       ("training", po::value(&training), "finite-element training data (default src/correction/training.csv, written by "
                                          "tools/fe-correction/generate-training)")
-      ("curves", po::value(&curves), "their force curves: index,delta_um,F_uN per point (default "
-                                     "src/correction/training_curves.csv, written by the same tool)")
+      ("curves", po::value(&curves), "their force curves: index,delta_um,F_uN per point (default: beside the "
+                                     "training file, its name with _curves.csv, as the same tool writes them)")
       ("out", po::value(&out), "the correction as C++ text (default src/correction/shipped_correction.inc; rebuild "
                                "the engine to use it)")
       ("errors", po::value(&errors), "also write per training row the finite-element, closed-form and corrected p and "
@@ -42,7 +48,8 @@ int run_fit_correction(const Arguments& arguments) {
                        "Fits fidelity corrected: two polynomials (a quadratic and the cubic terms in the strain) in\n"
                        "the logarithms of the measured groups d/d0 - 1, h/d0, rho/d0, F_top/(k d0), a/d0 (a the\n"
                        "probe's distance behind the apex) and F_low/F_top (the force window), correcting the closed\n"
-                       "form's E and the far field's p/E to the finite-element inverse (src/correction/README.md).\n"
+                       "form's E and the far field's p/E to the finite-element inverse, and a kriging interpolant of\n"
+                       "the E polynomial's residual (hyperparameters by maximum likelihood; src/correction/README.md).\n"
                        "Each training tube counts once per force window its curve reaches (tops 2, 3 and 4 uN, bottoms\n"
                        "0.05-0.5 of the top). Fits the tubes with k <= 20 N/m whose index is not a multiple of 5 plus\n"
                        "4, reports the largest errors in p and E on them and on the held-out tubes, next to the plain\n"
@@ -52,6 +59,7 @@ int run_fit_correction(const Arguments& arguments) {
                        described, {}, values)) {
     return 0;
   }
+  if (curves.empty()) curves = curves_beside(training);
   const Overwrite overwrite = force ? Overwrite::allow : Overwrite::refuse;
   check_can_write(out, overwrite);
   if (!errors.empty()) check_can_write(errors, overwrite);

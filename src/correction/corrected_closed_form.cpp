@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <string>
 #include <utility>
 
 #include <Eigen/Dense>
@@ -54,6 +55,14 @@ bool scaled(const std::array<double, correction_groups>& log_groups, const Corre
   return true;
 }
 
+// A window's bottom over its top from its logarithm, to three digits (exp(ln 0.05) prints as
+// 0.05000000000000001 in full).
+std::string ratio_text(double log_ratio) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", std::exp(log_ratio));
+  return text;
+}
+
 }  // namespace
 
 std::array<double, correction_groups> correction_log_groups(double k_tube, const TubeDiameters& diameters, double h,
@@ -95,8 +104,8 @@ void require_fitted_for(const Correction& correction, const ShellFeOptions& opti
   if (!(ratio >= correction.low[window_ratio] - 1e-12 && ratio <= correction.high[window_ratio] + 1e-12)) {
     throw_bad_value(location, names == OptionNames::command_flags ? "--window-uN" : "force_window_uN",
                     format_micro(options.force_window[0]) + "," + format_micro(options.force_window[1]),
-                    "a force window whose bottom is " + format_double(std::exp(correction.low[window_ratio])) + " to " +
-                        format_double(std::exp(correction.high[window_ratio])) +
+                    "a force window whose bottom is " + ratio_text(correction.low[window_ratio]) + " to " +
+                        ratio_text(correction.high[window_ratio]) +
                         " of its top, the windows fidelity corrected was fitted over (src/correction/README.md; "
                         "another needs fidelity shell_fe)");
   }
