@@ -128,6 +128,15 @@ CorrectedInverse corrected_inverse(double k_measured, const TubeDiameters& diame
   }
   result.closed_form_p = turgor.p;
   result.closed_form_E = modulus.E;
+  // A tube the wall law cannot inflate to d (past its burst) has no finite-element answer at all:
+  // that, not the fitted range, is what it is told.
+  const fe::FarFieldInverse far = fe::far_field_inverse(fe::far_field_law(correction.law), diameters.lambda,
+                                                        h / diameters.d0, instrument.poisson_ratio);
+  if (far.status != fe::FarFieldInverseStatus::ok) {
+    result.status = SampleStatus::no_inflation_state;
+    result.p = result.E = nan;
+    return result;
+  }
   const double k_tube = tube_stiffness(k_measured, instrument);
   std::array<double, correction_groups> z{};
   const double bending_length = std::sqrt(h * diameters.d0 / 2);
@@ -135,13 +144,6 @@ CorrectedInverse corrected_inverse(double k_measured, const TubeDiameters& diame
       instrument.probe_radius_m / bending_length > correction.max_probe_over_bending_length ||  // as the fit divides
       !scaled(correction_log_groups(k_tube, diameters, h, instrument.probe_radius_m, force_window, correction), correction, z)) {
     result.status = SampleStatus::outside_correction;
-    result.p = result.E = nan;
-    return result;
-  }
-  const fe::FarFieldInverse far = fe::far_field_inverse(fe::far_field_law(correction.law), diameters.lambda,
-                                                        h / diameters.d0, instrument.poisson_ratio);
-  if (far.status != fe::FarFieldInverseStatus::ok) {
-    result.status = SampleStatus::no_inflation_state;
     result.p = result.E = nan;
     return result;
   }

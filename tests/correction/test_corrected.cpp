@@ -143,7 +143,11 @@ TEST_CASE("outside the fitted range no value; the closed form's statuses pass th
   REQUIRE(ok.status == SampleStatus::ok);
   CHECK(ok.p > 0);
   // Each group pushed beyond its range: outside_correction, NaN values.
-  CHECK(corrected_inverse(k, diameters_in_si(1.9 * d0, d0), h, instrument, default_window, correction).status == SampleStatus::outside_correction);
+  const double widest_strain = std::exp(correction.high[0]);  // the most stretched fitted tube's d/d0 - 1
+  REQUIRE(widest_strain < 0.5);
+  CHECK(corrected_inverse(k, diameters_in_si((1.01 + widest_strain) * d0, d0), h, instrument, default_window, correction).status == SampleStatus::outside_correction);
+  // Past the log law's burst (d/d0 = 1.535) the wall has no inflated state: said as such.
+  CHECK(corrected_inverse(k, diameters_in_si(1.6 * d0, d0), h, instrument, default_window, correction).status == SampleStatus::no_inflation_state);
   CHECK(corrected_inverse(k, middle, 20e-9, instrument, default_window, correction).status == SampleStatus::outside_correction);
   CHECK(corrected_inverse(1000.0, middle, h, instrument, default_window, correction).status == SampleStatus::outside_correction);
   // Stiffer than the fitted tubes (k > 20 N/m) though every group lies inside its range: a narrow
