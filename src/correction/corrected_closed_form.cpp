@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <string>
 #include <utility>
 
 #include <Eigen/Dense>
@@ -54,12 +55,25 @@ bool scaled(const std::array<double, correction_groups>& log_groups, const Corre
   return true;
 }
 
+// A window's bottom over its top from its logarithm, to three digits (exp(ln 0.05) prints as
+// 0.05000000000000001 in full).
+std::string ratio_text(double log_ratio) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", std::exp(log_ratio));
+  return text;
+}
+
 }  // namespace
 
 std::array<double, correction_groups> correction_log_groups(double k_tube, const TubeDiameters& diameters, double h,
-                                                            double probe_radius, const Correction& correction) {
-  return {std::log(diameters.strain), std::log(h / diameters.d0), std::log(probe_radius / diameters.d0),
-          std::log(correction.force_window[1] / (k_tube * diameters.d0)), std::log(correction.probe_distance / diameters.d0)};
+                                                            double probe_radius, const std::array<double, 2>& force_window,
+                                                            const Correction& correction) {
+  return {std::log(diameters.strain),
+          std::log(h / diameters.d0),
+          std::log(probe_radius / diameters.d0),
+          std::log(force_window[1] / (k_tube * diameters.d0)),
+          std::log(correction.probe_distance / diameters.d0),
+          std::log(force_window[0] / force_window[1])};
 }
 
 void require_fitted_for(const Correction& correction, const ShellFeOptions& options, const Instrument& instrument,
@@ -83,11 +97,17 @@ void require_fitted_for(const Correction& correction, const ShellFeOptions& opti
   if (std::abs(options.probe_distance - correction.probe_distance) > 1e-9 * correction.tube_length) {
     refuse("probe_distance_um", "--probe-distance-um", format_micro(options.probe_distance), format_micro(correction.probe_distance));
   }
-  for (std::size_t end = 0; end < 2; ++end) {
-    if (std::abs(options.force_window[end] - correction.force_window[end]) > 1e-9 * correction.force_window[1]) {
-      refuse("force_window_uN", "--window-uN", format_micro(options.force_window[0]) + "," + format_micro(options.force_window[1]),
-             format_micro(correction.force_window[0]) + "," + format_micro(correction.force_window[1]));
-    }
+  // The window's bottom over its top is one of the groups, the same for every sample: a window
+  // outside the fitted ones is the campaign's, not a sample's.
+  constexpr std::size_t window_ratio = correction_groups - 1;
+  const double ratio = std::log(options.force_window[0] / options.force_window[1]);
+  if (!(ratio >= correction.low[window_ratio] - 1e-12 && ratio <= correction.high[window_ratio] + 1e-12)) {
+    throw_bad_value(location, names == OptionNames::command_flags ? "--window-uN" : "force_window_uN",
+                    format_micro(options.force_window[0]) + "," + format_micro(options.force_window[1]),
+                    "a force window whose bottom is " + ratio_text(correction.low[window_ratio]) + " to " +
+                        ratio_text(correction.high[window_ratio]) +
+                        " of its top, the windows fidelity corrected was fitted over (src/correction/README.md; "
+                        "another needs fidelity shell_fe)");
   }
   if (std::abs(instrument.poisson_ratio - correction.poisson_ratio) > 1e-12) {
     refuse("poisson_ratio", "--nu", format_double(instrument.poisson_ratio), format_double(correction.poisson_ratio));
@@ -95,7 +115,8 @@ void require_fitted_for(const Correction& correction, const ShellFeOptions& opti
 }
 
 CorrectedInverse corrected_inverse(double k_measured, const TubeDiameters& diameters, double h,
-                                   const Instrument& instrument, const Correction& correction) noexcept {
+                                   const Instrument& instrument, const std::array<double, 2>& force_window,
+                                   const Correction& correction) noexcept {
   CorrectedInverse result;
   const TurgorResult turgor = invert_turgor(k_measured, diameters, instrument);
   const ModulusResult modulus =
@@ -107,16 +128,8 @@ CorrectedInverse corrected_inverse(double k_measured, const TubeDiameters& diame
   }
   result.closed_form_p = turgor.p;
   result.closed_form_E = modulus.E;
-  const double k_tube = tube_stiffness(k_measured, instrument);
-  std::array<double, correction_groups> z{};
-  const double bending_length = std::sqrt(h * diameters.d0 / 2);
-  if (k_tube > correction.max_stiffness ||  // stiffer than any fitted tube
-      instrument.probe_radius_m > correction.max_probe_over_bending_length * bending_length ||
-      !scaled(correction_log_groups(k_tube, diameters, h, instrument.probe_radius_m, correction), correction, z)) {
-    result.status = SampleStatus::outside_correction;
-    result.p = result.E = nan;
-    return result;
-  }
+  // A tube the wall law cannot inflate to d (past its burst) has no finite-element answer at all:
+  // that, not the fitted range, is what it is told.
   const fe::FarFieldInverse far = fe::far_field_inverse(fe::far_field_law(correction.law), diameters.lambda,
                                                         h / diameters.d0, instrument.poisson_ratio);
   if (far.status != fe::FarFieldInverseStatus::ok) {
@@ -124,8 +137,18 @@ CorrectedInverse corrected_inverse(double k_measured, const TubeDiameters& diame
     result.p = result.E = nan;
     return result;
   }
+  const double k_tube = tube_stiffness(k_measured, instrument);
+  std::array<double, correction_groups> z{};
+  const double bending_length = std::sqrt(h * diameters.d0 / 2);
+  if (k_tube > correction.max_stiffness ||  // stiffer than any fitted tube
+      instrument.probe_radius_m / bending_length > correction.max_probe_over_bending_length ||  // as the fit divides
+      !scaled(correction_log_groups(k_tube, diameters, h, instrument.probe_radius_m, force_window, correction), correction, z)) {
+    result.status = SampleStatus::outside_correction;
+    result.p = result.E = nan;
+    return result;
+  }
   const std::array<double, correction_terms> phi = basis(z);
-  result.E = modulus.E * std::exp(polynomial(correction.modulus, phi));
+  result.E = modulus.E * std::exp(polynomial(correction.modulus, phi) + correction.modulus_residual.value(z));
   result.p = result.E * far.pressure_over_E * std::exp(polynomial(correction.pressure_ratio, phi));
   return result;
 }
@@ -133,7 +156,7 @@ CorrectedInverse corrected_inverse(double k_measured, const TubeDiameters& diame
 CorrectedTurgorModulus::CorrectedTurgorModulus(const Instrument& instrument, const ShellFeOptions& options,
                                                std::string_view location, OptionNames names,
                                                const Correction& correction)
-    : instrument_(instrument), correction_(correction) {
+    : instrument_(instrument), force_window_(options.force_window), correction_(correction) {
   validate(instrument_, location);
   if (correction_.training_points == 0) {
     throw InputError(std::string(location), "fidelity corrected: this build holds no fitted correction "
@@ -160,7 +183,7 @@ void CorrectedTurgorModulus::evaluate(SampleBlock& block) const {
       status[i] = SampleStatus::invalid_input;
       continue;
     }
-    const CorrectedInverse result = corrected_inverse(k[i], diameters, h[i], instruments[i], correction_);
+    const CorrectedInverse result = corrected_inverse(k[i], diameters, h[i], instruments[i], force_window_, correction_);
     if (result.status != SampleStatus::ok) {
       status[i] = result.status;
       continue;
@@ -171,20 +194,20 @@ void CorrectedTurgorModulus::evaluate(SampleBlock& block) const {
 }
 
 Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOptions& options, double poisson_ratio,
-                          int held_out_fold) {
+                          int held_out_fold, const KrigingHyperparameters* hyperparameters) {
   Correction correction;
   correction.law = options.law;
   correction.substrate = options.substrate;
   correction.bending = options.bending;
   correction.tube_length = options.tube_length;
   correction.probe_distance = options.probe_distance;
-  correction.force_window = options.force_window;
   correction.poisson_ratio = poisson_ratio;
   Instrument instrument;
   instrument.poisson_ratio = poisson_ratio;
 
   // Per fitting row: ln groups, and the two targets ln(E/E_cf), ln((p/E)/(p/E)_far).
   std::vector<std::array<double, correction_groups>> groups;
+  double widest_probe = 0.0;  // rho over the bending length sqrt(h d0 / 2)
   std::vector<double> modulus_target, ratio_target;
   for (const TrainingPoint& point : points) {
     if (!in_training_envelope(point) || held_out(point, held_out_fold)) continue;
@@ -196,7 +219,8 @@ Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOp
     const fe::FarFieldInverse far = fe::far_field_inverse(fe::far_field_law(options.law), diameters.lambda,
                                                           point.h / point.d0, poisson_ratio);
     if (modulus.status != SampleStatus::ok || far.status != fe::FarFieldInverseStatus::ok) continue;
-    groups.push_back(correction_log_groups(point.k, diameters, point.h, point.rho, correction));
+    groups.push_back(correction_log_groups(point.k, diameters, point.h, point.rho, point.window, correction));
+    widest_probe = std::max(widest_probe, point.rho / std::sqrt(point.h * point.d0 / 2));
     modulus_target.push_back(std::log(point.E / modulus.E));
     ratio_target.push_back(std::log(point.p / point.E / far.pressure_over_E));
   }
@@ -239,7 +263,8 @@ Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOp
     std::snprintf(text, sizeof text, "%.2g", conditioning);
     throw InputError("fit-correction", std::to_string(rows) + " fitting rows whose groups are collinear (the design's "
                                            "reciprocal condition is " + std::string(text) +
-                                           ", below 1e-9): expected rows that vary d/d0, h/d0, rho/d0, F_top/(k d0) and a/d0 "
+                                           ", below 1e-9): expected rows that vary d/d0, h/d0, rho/d0, F_top/(k d0), a/d0 "
+                                           "and F_low/F_top "
                                            "independently (e.g. more than one probe radius)");
   }
   const Eigen::VectorXd modulus_coefficients = qr.solve(modulus);
@@ -248,9 +273,21 @@ Correction fit_correction(std::span<const TrainingPoint> points, const ShellFeOp
     correction.modulus[t] = modulus_coefficients(static_cast<Eigen::Index>(t));
     correction.pressure_ratio[t] = ratio_coefficients(static_cast<Eigen::Index>(t));
   }
+  // The modulus polynomial's residual, interpolated (residual_kriging.hpp): one polynomial over
+  // the envelope leaves a few percent (src/correction/README.md, "Training data and fit").
+  std::vector<double> centres, residuals;
+  for (std::size_t r = 0; r < rows; ++r) {
+    std::array<double, correction_groups> z{};
+    scaled(groups[r], correction, z);
+    centres.insert(centres.end(), z.begin(), z.end());
+    residuals.push_back(modulus_target[r] - polynomial(correction.modulus, basis(z)));
+  }
+  correction.modulus_residual =
+      fit_kriging(centres, correction_groups, residuals,
+                  hyperparameters ? *hyperparameters : likeliest_hyperparameters(centres, correction_groups, residuals));
   correction.training_points = static_cast<int>(rows);
   correction.max_stiffness = correction_max_stiffness;
-  correction.max_probe_over_bending_length = correction_max_probe_over_bending_length;
+  correction.max_probe_over_bending_length = widest_probe;
   return correction;
 }
 

@@ -1,13 +1,17 @@
 // The correction's data: the training CSV it is fitted from, the C++ text `growthuq
 // fit-correction` writes, and the shipped correction compiled from that text.
+#include <algorithm>
 #include <array>
 #include <cstdio>
+#include <map>
+#include <span>
 #include <string>
 
 #include "growthuq/core/error.hpp"
 #include "growthuq/core/numbers.hpp"
 #include "correction/correction_training.hpp"
 #include "growthuq/correction/corrected_closed_form.hpp"
+#include "fe/force_window.hpp"
 #include "growthuq/io/csv.hpp"
 
 namespace growthuq {
@@ -19,10 +23,19 @@ std::string number(double value) {
   return text.data();
 }
 
-template <std::size_t N>
-std::string list(const std::array<double, N>& values) {
+std::string list(std::span<const double> values) {
   std::string text = "{";
-  for (std::size_t i = 0; i < N; ++i) text += (i ? ", " : "") + number(values[i]);
+  for (std::size_t i = 0; i < values.size(); ++i) text += (i ? ", " : "") + number(values[i]);
+  return text + "}";
+}
+
+// A long list one row of `width` numbers per line (the kriging's centres: one per line).
+std::string rows_of(std::span<const double> values, std::size_t width) {
+  std::string text = "{\n";
+  for (std::size_t i = 0; i < values.size(); i += width) {
+    for (std::size_t j = i; j < std::min(i + width, values.size()); ++j) text += number(values[j]) + ", ";
+    text += "\n";
+  }
   return text + "}";
 }
 
@@ -44,6 +57,8 @@ std::vector<TrainingPoint> read_training_csv(const std::string& path) {
                                            table.column_index("d0_um"), table.column_index("rho_um"),
                                            table.column_index("k_N_per_m"), table.column_index("d_um")};
   const std::array<double, 7> to_si{1e6, 1e6, 1e-9, 1e-6, 1e-6, 1.0, 1e-6};
+  // What a simulation that stopped may leave empty: the turgid h, k and d.
+  constexpr std::array<bool, 7> measured{false, false, true, false, false, true, true};
   std::vector<TrainingPoint> points;
   for (std::size_t r = 0; r < table.rows.size(); ++r) {
     const std::vector<std::string>& row = table.rows[r];
@@ -53,7 +68,7 @@ std::vector<TrainingPoint> read_training_csv(const std::string& path) {
     std::array<double, 7> values{};
     for (std::size_t c = 0; c < columns.size(); ++c) {
       const std::string& cell = row[columns[c]];
-      if (cell.empty() && c >= 5 && !point.ok) continue;  // k and d are empty when the simulation failed
+      if (cell.empty() && measured[c] && !point.ok) continue;
       values[c] = parse_double(cell, table.row_location(r), table.header[columns[c]]);
       if (!(values[c] > 0)) throw_bad_value(table.row_location(r), table.header[columns[c]], cell, "a positive number");
       values[c] *= to_si[c];
@@ -70,6 +85,52 @@ std::vector<TrainingPoint> read_training_csv(const std::string& path) {
   return points;
 }
 
+std::vector<std::array<double, 2>> training_windows() {
+  std::vector<std::array<double, 2>> windows;
+  for (const double top : {2e-6, 3e-6, 4e-6}) {
+    for (const double ratio : {0.05, 0.1, 0.25, 0.5}) windows.push_back({ratio * top, top});
+  }
+  return windows;
+}
+
+std::vector<TrainingPoint> under_training_windows(const std::vector<TrainingPoint>& rows, const std::string& curves_path) {
+  struct Curve {
+    std::vector<double> depth, force;  // um, uN
+  };
+  const CsvTable table = read_csv(curves_path);
+  const std::size_t index = table.column_index("index"), depth = table.column_index("delta_um"),
+                    force = table.column_index("F_uN");
+  std::map<int, std::size_t> row_of;
+  for (std::size_t r = 0; r < rows.size(); ++r) row_of[rows[r].index] = r;
+  std::map<int, Curve> curves;
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const std::vector<std::string>& row = table.rows[r];
+    const int i = static_cast<int>(parse_count(row[index], table.row_location(r), "index", 0, 1000000));
+    if (!row_of.contains(i)) throw_bad_value(table.row_location(r), "index", row[index], "the index of a training row");
+    Curve& curve = curves[i];
+    curve.depth.push_back(parse_double(row[depth], table.row_location(r), "delta_um"));
+    curve.force.push_back(parse_double(row[force], table.row_location(r), "F_uN"));
+    if (curve.depth.size() > 1 && !(curve.depth.back() > curve.depth[curve.depth.size() - 2])) {
+      throw_bad_value(table.row_location(r), "delta_um", row[depth], "a depth beyond the curve's previous one");
+    }
+  }
+  std::vector<TrainingPoint> points;
+  for (const auto& [i, curve] : curves) {
+    const TrainingPoint& tube = rows[row_of[i]];
+    if (!(tube.d > 0 && tube.h > 0)) continue;  // no turgid state: no tube to measure
+    for (const std::array<double, 2>& window : training_windows()) {
+      const fe::WindowFit fit = fe::fit_force_window(curve.depth, curve.force, window[0] * 1e6, window[1] * 1e6);
+      if (fit.status != fe::WindowFitStatus::ok) continue;
+      TrainingPoint point = tube;
+      point.window = window;
+      point.k = fit.slope;  // uN/um = N/m
+      point.ok = true;
+      points.push_back(point);
+    }
+  }
+  return points;
+}
+
 std::string correction_source(const Correction& c) {
   std::string text =
       "// Written by `growthuq fit-correction` from src/correction/training.csv: do not edit by hand\n"
@@ -79,7 +140,6 @@ std::string correction_source(const Correction& c) {
   text += "c.bending = " + std::string(c.bending ? "true" : "false") + ";\n";
   text += "c.tube_length = " + number(c.tube_length) + ";\n";
   text += "c.probe_distance = " + number(c.probe_distance) + ";\n";
-  text += "c.force_window = " + list(c.force_window) + ";\n";
   text += "c.poisson_ratio = " + number(c.poisson_ratio) + ";\n";
   text += "c.low = " + list(c.low) + ";\n";
   text += "c.high = " + list(c.high) + ";\n";
@@ -87,6 +147,12 @@ std::string correction_source(const Correction& c) {
   text += "c.max_probe_over_bending_length = " + number(c.max_probe_over_bending_length) + ";\n";
   text += "c.modulus = " + list(c.modulus) + ";\n";
   text += "c.pressure_ratio = " + list(c.pressure_ratio) + ";\n";
+  const ResidualKriging& g = c.modulus_residual;
+  text += "c.modulus_residual.length_scales = " + list(g.length_scales) + ";\n";
+  text += "c.modulus_residual.signal_sd = " + number(g.signal_sd) + ";\n";
+  text += "c.modulus_residual.noise_sd = " + number(g.noise_sd) + ";\n";
+  text += "c.modulus_residual.centres = " + rows_of(g.centres, std::max<std::size_t>(1, g.length_scales.size())) + ";\n";
+  text += "c.modulus_residual.weights = " + rows_of(g.weights, 4) + ";\n";
   text += "c.training_points = " + std::to_string(c.training_points) + ";\n";
   return text;
 }

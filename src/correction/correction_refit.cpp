@@ -24,7 +24,7 @@ CorrectedInverse corrected_for(const TrainingPoint& point, const Correction& cor
   Instrument instrument;
   instrument.probe_radius_m = point.rho;
   instrument.poisson_ratio = correction.poisson_ratio;
-  return corrected_inverse(point.k, diameters_in_si(point.d, point.d0), point.h, instrument, correction);
+  return corrected_inverse(point.k, diameters_in_si(point.d, point.d0), point.h, instrument, point.window, correction);
 }
 
 // The largest relative errors of the corrected and the closed form against the training rows'
@@ -48,17 +48,19 @@ Errors errors_of(const std::vector<TrainingPoint>& points, const Correction& cor
   return errors;
 }
 
-// Per training row with a value: its groups, the finite-element p and E, and both fidelities'
-// values and relative errors (for the plot of tools/fe-correction/plot-errors).
+// Per training tube and window with a value: its groups, the finite-element p and E, and both
+// fidelities' values (for the plot of tools/fe-correction/plot-errors).
 std::string errors_table(const std::vector<TrainingPoint>& points, const Correction& correction) {
-  CsvWriter writer({"index", "held_out", "lambda", "h_over_d", "rho_over_d", "p_fe_MPa", "E_fe_MPa", "p_closed_form_MPa",
-                    "E_closed_form_MPa", "p_corrected_MPa", "E_corrected_MPa", "status"});
+  CsvWriter writer({"index", "window_low_uN", "window_top_uN", "held_out", "lambda", "h_over_d", "rho_over_d", "k_N_per_m",
+                    "p_fe_MPa", "E_fe_MPa", "p_closed_form_MPa", "E_closed_form_MPa", "p_corrected_MPa", "E_corrected_MPa",
+                    "status"});
   for (const TrainingPoint& point : points) {
     if (!in_training_envelope(point)) continue;
     const CorrectedInverse r = corrected_for(point, correction);
     const auto mpa = [](double pa) { return std::isfinite(pa) ? format_double(pa * 1e-6) : std::string(); };
-    writer.add_row({std::to_string(point.index), held_out(point) ? "1" : "0", format_double(point.d / point.d0),
-                    format_double(point.h / point.d), format_double(point.rho / point.d), mpa(point.p), mpa(point.E),
+    writer.add_row({std::to_string(point.index), format_double(point.window[0] * 1e6), format_double(point.window[1] * 1e6),
+                    held_out(point) ? "1" : "0", format_double(point.d / point.d0), format_double(point.h / point.d),
+                    format_double(point.rho / point.d), format_double(point.k), mpa(point.p), mpa(point.E),
                     mpa(r.closed_form_p), mpa(r.closed_form_E), mpa(r.p), mpa(r.E), std::string(to_string(r.status))});
   }
   return writer.text();
@@ -72,10 +74,14 @@ struct CrossValidation {
   double sum_squares = 0, largest = 0;  // of the larger of the two errors (p, E) per tube
 };
 
-CrossValidation cross_validate(const std::vector<TrainingPoint>& points, double poisson_ratio) {
+// Each fold's kriging keeps the hyperparameters of the shipped fit (`hyperparameters`): refitting
+// them per fold would take a minute more each and move them little (the likelihood is flat near
+// its maximum), while the polynomial and the kriging weights are refitted without the fold.
+CrossValidation cross_validate(const std::vector<TrainingPoint>& points, double poisson_ratio,
+                               const KrigingHyperparameters& hyperparameters) {
   CrossValidation cv;
   for (int fold = 0; fold < correction_folds; ++fold) {
-    const Correction correction = fit_correction(points, ShellFeOptions{}, poisson_ratio, fold);
+    const Correction correction = fit_correction(points, ShellFeOptions{}, poisson_ratio, fold, &hyperparameters);
     for (const TrainingPoint& point : points) {
       if (!in_training_envelope(point) || !held_out(point, fold)) continue;
       const CorrectedInverse result = corrected_for(point, correction);
@@ -101,8 +107,8 @@ std::string line_of(std::string_view name, const Errors& errors) {
 
 }  // namespace
 
-CorrectionRefit refit_correction(const std::string& training_csv) {
-  const std::vector<TrainingPoint> points = read_training_csv(training_csv);
+CorrectionRefit refit_correction(const std::string& training_csv, const std::string& curves_csv) {
+  const std::vector<TrainingPoint> points = under_training_windows(read_training_csv(training_csv), curves_csv);
   // The fit's refusals (too few usable rows, collinear groups) are the training file's.
   const Correction correction = [&] {
     try {
@@ -113,9 +119,11 @@ CorrectionRefit refit_correction(const std::string& training_csv) {
   }();
   CorrectionRefit refit;
   refit.report = line_of("fitted", errors_of(points, correction, false)) + line_of("held out", errors_of(points, correction, true));
-  const CrossValidation cv = cross_validate(points, Instrument{}.poisson_ratio);
+  const ResidualKriging& kriging = correction.modulus_residual;
+  const CrossValidation cv = cross_validate(points, Instrument{}.poisson_ratio,
+                                            KrigingHyperparameters{kriging.length_scales, kriging.signal_sd, kriging.noise_sd});
   refit.report += "cross-validation (" + std::to_string(correction_folds) + " folds, each held out in turn and the rest "
-                  "refitted): " + std::to_string(cv.predictions) + " predictions (" + std::to_string(cv.outside) +
+                  "refitted, the kriging with the fit's hyperparameters): " + std::to_string(cv.predictions) + " predictions (" + std::to_string(cv.outside) +
                   " outside the fitted region), " + std::to_string(cv.within_two_percent) +
                   " within 2 % in p and E; larger of the two errors rms " +
                   percent(cv.predictions ? std::sqrt(cv.sum_squares / cv.predictions) : 0.0) + ", largest " +

@@ -151,8 +151,12 @@ TEST_CASE("fidelity corrected refuses model options it was not fitted for, namin
   CHECK_THROWS_WITH_AS(models_of("substrate = off\n"), doctest::Contains("substrate = 'off': expected on"), InputError);
   CHECK_THROWS_WITH_AS(models_of("probe_distance_um = 20\n"), doctest::Contains("probe_distance_um = '20': expected 10"),
                        InputError);
-  CHECK_THROWS_WITH_AS(models_of("force_window_uN = 0.4,3\n"), doctest::Contains("force_window_uN = '0.4,3': expected 0.4,4"),
+  // The force window is one of the correction's groups: a window it was fitted over gives a value,
+  // one whose bottom is too close to its top is refused by the key.
+  CHECK_NOTHROW(models_of("force_window_uN = 0.4,3\n"));
+  CHECK_THROWS_WITH_AS(models_of("force_window_uN = 2,3\n"),
+                       doctest::Contains("force_window_uN = '2,3': expected a force window whose bottom is 0.05 to 0.5 of its top"),
                        InputError);
-  // The mesh is not one of them: the correction stands for the default mesh's inverse.
+  // The mesh is not one of them: the correction stands for the coarse mesh's inverse whatever the campaign's.
   CHECK_NOTHROW(models_of("mesh = coarse\n"));
 }

@@ -368,7 +368,9 @@ TEST_CASE("nonsense inputs are refused naming file, line and value, or warned ab
 
   // Training rows of one probe radius: rho/d0 and a/d0 move together (collinear terms).
   const std::string training = slurp(source + "/src/correction/training.csv");
-  spit(scratch.root / "one_rho.csv", with_column(training, 5, "0.5"));
+  REQUIRE(training.starts_with("index,p_MPa,E_MPa,h_nm,h0_nm,d0_um,rho_um,"));
+  spit(scratch.root / "one_rho.csv", with_column(training, 6, "0.5"));
+  fs::copy(source + "/src/correction/training_curves.csv", scratch.root / "one_rho_curves.csv");
   const CliOutcome collinear = run_in(scratch.root, cli({"fit-correction", "--training", "one_rho.csv", "--out", "c.inc"}));
   CHECK(collinear.exit_code == 2);
   CHECK(collinear.err.starts_with("growthuq fit-correction: error: one_rho.csv: "));
@@ -376,6 +378,8 @@ TEST_CASE("nonsense inputs are refused naming file, line and value, or warned ab
   CHECK(!fs::exists(scratch.root / "c.inc"));
   // Too few rows: the message names the file.
   spit(scratch.root / "few.csv", training.substr(0, training.find("\n5,") + 1));
+  const std::string curves = slurp(source + "/src/correction/training_curves.csv");
+  spit(scratch.root / "few_curves.csv", curves.substr(0, curves.find("\n5,") + 1));
   const CliOutcome few = run_in(scratch.root, cli({"fit-correction", "--training", "few.csv", "--out", "c.inc"}));
   CHECK(few.exit_code == 2);
   CHECK(few.err.starts_with("growthuq fit-correction: error: few.csv: "));

@@ -29,19 +29,21 @@ const std::string source_dir = GROWTHUQ_SOURCE_DIR;
 TEST_CASE("fit-correction refits the shipped correction byte for byte and reports its errors") {
   const fs::path directory = scratch("refit");
   const CliOutcome outcome =
-      run_cli("fit-correction --training '" + source_dir + "/src/correction/training.csv' --out fit.inc --errors errors.csv",
+      run_cli("fit-correction --training '" + source_dir + "/src/correction/training.csv' --curves '" + source_dir +
+                  "/src/correction/training_curves.csv' --out fit.inc --errors errors.csv",
               directory);
   INFO(outcome.err);
   REQUIRE(outcome.exit_code == 0);
   CHECK(slurp(directory / "fit.inc") == slurp(fs::path(source_dir) / "src/correction/shipped_correction.inc"));
   CHECK(outcome.out.find("held out: ") != std::string::npos);
   CHECK(outcome.out.find("cross-validation (5 folds") != std::string::npos);
-  // One errors row per training row inside the fitted envelope, with a value or a status.
+  // One errors row per training tube and window inside the fitted envelope, with a value or a status.
   const std::string errors = slurp(directory / "errors.csv");
-  CHECK(errors.rfind("index,held_out,lambda,", 0) == 0);
+  CHECK(errors.rfind("index,window_low_uN,window_top_uN,held_out,lambda,", 0) == 0);
   CHECK(errors.find(",nan") == std::string::npos);
 
-  const CliOutcome again = run_cli("fit-correction --training '" + source_dir + "/src/correction/training.csv' --out fit.inc",
+  const CliOutcome again = run_cli("fit-correction --training '" + source_dir + "/src/correction/training.csv' --curves '" +
+                                       source_dir + "/src/correction/training_curves.csv' --out fit.inc",
                                    directory);
   CHECK(again.exit_code != 0);
   CHECK(again.err.find("fit.inc") != std::string::npos);
@@ -53,7 +55,8 @@ TEST_CASE("fit-correction names the file, line and column of a malformed trainin
   std::ofstream(directory / "bad.csv") << "index,p_MPa,E_MPa,h_nm,d0_um,rho_um,k_N_per_m,d_um,status,newton_iterations,seconds\n"
                                        << "0,0.4,40,180,5.3,0.4,2.5,6.2,ok,100,20\n"
                                        << "1,0.4,-40,180,5.3,0.4,2.5,6.2,ok,100,20\n";
-  const CliOutcome outcome = run_cli("fit-correction --training bad.csv --out fit.inc", directory);
+  std::ofstream(directory / "curves.csv") << "index,delta_um,F_uN\n0,0,0\n0,1,3\n";
+  const CliOutcome outcome = run_cli("fit-correction --training bad.csv --curves curves.csv --out fit.inc", directory);
   CHECK(outcome.exit_code != 0);
   CHECK(outcome.err.find("bad.csv") != std::string::npos);
   CHECK(outcome.err.find("E_MPa") != std::string::npos);

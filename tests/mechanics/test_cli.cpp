@@ -116,7 +116,7 @@ TEST_CASE("eval --fidelity corrected runs the campaign's evaluator: its p and E,
   Instrument instrument;
   instrument.probe_radius_m = 0.25e-6;
   const CorrectedInverse reference =
-      corrected_inverse(2.0, diameters_in_si(6.4e-6, 5.35e-6), 200e-9, instrument, shipped_correction());
+      corrected_inverse(2.0, diameters_in_si(6.4e-6, 5.35e-6), 200e-9, instrument, {0.4e-6, 4e-6}, shipped_correction());
   REQUIRE(reference.status == SampleStatus::ok);
   CHECK(value("p") == doctest::Approx(reference.p * 1e-6).epsilon(1e-10));
   CHECK(value("E") == doctest::Approx(reference.E * 1e-6).epsilon(1e-10));
@@ -141,7 +141,7 @@ TEST_CASE("eval --fidelity corrected: a model option the correction was not fitt
       {"--bending off", "--bending = 'off': expected on,"},
       {"--tube-length-um 80", "--tube-length-um = '80': expected 100,"},
       {"--probe-distance-um 20", "--probe-distance-um = '20': expected 10,"},
-      {"--window-uN 0.4,3", "--window-uN = '0.4,3': expected 0.4,4,"},
+      {"--window-uN 2,3", "--window-uN = '2,3': expected a force window whose bottom is 0.05 to 0.5 of its top"},
       {"--nu 0.3", "--nu = '0.3': expected 0.2,"},
   });
   // The options it was fitted for, stated or not, give a value.
