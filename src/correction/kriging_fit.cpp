@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 #include <numeric>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -70,6 +71,22 @@ double negative_log_likelihood(const gsl_vector* x, void* data) {
   return std::isfinite(value) ? value : std::numeric_limits<double>::max();
 }
 
+// At most `count` of the n points, spread over them: point (k p) mod n for k = 0, 1, ..., p
+// coprime to n (so that no point comes twice). Every stride-th point would be biased where the points come in
+// blocks (the training data: each tube's 12 windows in one order, so a stride of 4 keeps only the
+// windows whose bottom is 0.05 of the top, and the likelihood would never see the window vary).
+std::vector<std::size_t> likelihood_subset(std::size_t n, std::size_t count) {
+  std::vector<std::size_t> subset;
+  if (n <= count) {
+    for (std::size_t a = 0; a < n; ++a) subset.push_back(a);
+    return subset;
+  }
+  std::size_t step = 7919;  // a prime: coprime to n unless n is a multiple of it
+  while (std::gcd(step, n) != 1) ++step;
+  for (std::size_t k = 0; k < count; ++k) subset.push_back(k * step % n);
+  return subset;
+}
+
 }  // namespace
 
 double ResidualKriging::value(std::span<const double> z) const noexcept {
@@ -85,10 +102,9 @@ KrigingHyperparameters likeliest_hyperparameters(std::span<const double> points,
                                                  std::span<const double> residuals, std::size_t likelihood_points) {
   detail::gsl_errors_return();  // GSL reports through return codes; it must never abort a run
   const std::size_t n = residuals.size();
-  const std::size_t stride = std::max<std::size_t>(1, (n + likelihood_points - 1) / likelihood_points);
   std::vector<double> subset;
   std::vector<double> subset_residuals;
-  for (std::size_t a = 0; a < n; a += stride) {
+  for (const std::size_t a : likelihood_subset(n, likelihood_points)) {
     subset.insert(subset.end(), points.begin() + static_cast<std::ptrdiff_t>(a * dimension),
                   points.begin() + static_cast<std::ptrdiff_t>((a + 1) * dimension));
     subset_residuals.push_back(residuals[a]);

@@ -18,10 +18,10 @@ struct KrigingHyperparameters {
 // The hyperparameters that maximise the log marginal likelihood of `residuals` at `points` (row
 // after row of `dimension` coordinates; Rasmussen and Williams 2006, eq. 5.8), found by GSL's
 // Nelder-Mead simplex over their logarithms. The likelihood costs a Cholesky factorisation of
-// the whole covariance, so it is evaluated on every stride-th point, stride chosen to keep at
-// most `likelihood_points` (a few hundred points fix eight hyperparameters; the weights then use
-// them all). The noise never drops below 1e-4 (0.01 % in ln E: the data's own noise is 0.2 %),
-// which keeps the covariance positive definite.
+// the whole covariance, so it is evaluated on at most `likelihood_points` of the points, spread
+// over them (a few hundred points fix eight hyperparameters; the weights then use them all). The
+// noise never drops below 1e-4 (0.01 % in ln E: the data's own noise is 0.2 %), which keeps the
+// covariance positive definite.
 KrigingHyperparameters likeliest_hyperparameters(std::span<const double> points, std::size_t dimension,
                                                  std::span<const double> residuals, std::size_t likelihood_points = 600);
 
