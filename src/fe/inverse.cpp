@@ -76,6 +76,14 @@ Inflated inflate(const ShellFeMeasurement& m, const Instrument& instrument, cons
   double thickness = far.h0_over_d0;
   const auto residual = [&](double at, double& h0, bool& failed) {
     if (far_field) h0 = unstressed_at(options.law, std::exp(at), turgid, nu);
+    if (!(h0 > 0)) {
+      // The trial pressure is past the far field's pressure maximum: no wall, so no solve.
+      failed = true;
+      inflated.status = SampleStatus::no_inflation_state;
+      inflated.message = "finite-element inflation: the wall bursts at (p/E)/(h0/d0) = " + format_double(std::exp(at)) +
+                         " before the mesh reaches d/d0 = " + format_double(lambda);
+      return std::numeric_limits<double>::quiet_NaN();
+    }
     problem.pressure = std::exp(at) * h0;
     problem.thickness = h0;
     const fe::ForwardResult result = fe::simulate_inflation(problem);
@@ -113,6 +121,14 @@ Inflated inflate(const ShellFeMeasurement& m, const Instrument& instrument, cons
     previous_r = r;
     u -= r / slope;
     r = residual(u, thickness, failed);
+    // Near the law's pressure maximum the diameter's slope in P grows without bound, and a
+    // secant step can land past the burst: step back halfway towards the last state (a trial
+    // past the burst costs no solve).
+    for (int cut = 0; cut < 8 && failed && inflated.status == SampleStatus::no_inflation_state && u > previous_u; ++cut) {
+      u = 0.5 * (u + previous_u);
+      failed = false;
+      r = residual(u, thickness, failed);
+    }
     if (failed) return inflated;
   }
   inflated.pressure = std::exp(u) * thickness;
