@@ -25,6 +25,7 @@ class Case:
     nu: float = 0.2
     length: float = 100.0
     behind_apex: float = 10.0
+    end: str = "pinned"  # the distal end: "pinned" (the mid-surface ring, as the shell's edge) or "zsym" (README.md)
 
 
 class SolidTimeout(RuntimeError):
@@ -32,14 +33,14 @@ class SolidTimeout(RuntimeError):
     cut its increments for hours, README.md)."""
 
 
-def run_ccx(deck_base, threads=1, timeout=None):
-    """Runs ccx on deck_base.inp in its directory; returns the wall time in s. Stops it and
-    raises SolidTimeout after `timeout` s."""
+def run_ccx(deck_base, threads=1, timeout=None, niceness=15):
+    """Runs ccx on deck_base.inp in its directory, under `nice -n niceness`; returns the wall
+    time in s. Stops it and raises SolidTimeout after `timeout` s."""
     env = dict(os.environ, OMP_NUM_THREADS=str(threads), CCX_NPROC_STIFFNESS=str(threads))
     start = time.monotonic()
     folder, name = os.path.split(deck_base)
     try:
-        result = subprocess.run(["nice", "-n", "15", "ccx", "-i", name], cwd=folder or ".", env=env,
+        result = subprocess.run(["nice", "-n", str(niceness), "ccx", "-i", name], cwd=folder or ".", env=env,
                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=timeout)
     except subprocess.TimeoutExpired:
         raise SolidTimeout(f"ccx stopped after {timeout:.0f} s on {deck_base}.inp") from None
@@ -68,6 +69,7 @@ def _experiment(case, res, contact, depth, z_ref, centre, plate_x, with_probe):
     th = np.repeat(theta, 2)[1:]
     key_of = {n: key for key, n in mesh.ids.items()}
     sets = {"MIRROR": [], "END": [], "MIDRING": [], "UNDER": [], "AXIS": []}
+    last_i = len(th) - 1
     for n, key in key_of.items():
         if key[0] == "apex":
             sets["MIRROR"].append(n)
@@ -76,8 +78,9 @@ def _experiment(case, res, contact, depth, z_ref, centre, plate_x, with_probe):
         _, i, j, k = key
         if i in (0, len(th) - 1):
             sets["MIRROR"].append(n)
-        if j == 0 and k == res.layers:
-            sets["END"].append(n)  # the mid-surface ring: the shell's pinned edge
+        if j == 0 and (k == res.layers if case.end == "pinned" else True):
+            # pinned: the mid-surface ring, the shell's pinned edge; zsym: the whole end face
+            sets["END"].append(n)
         if j == j_mid and k == res.layers:
             sets["MIDRING"].append(n)
         if i == 0 and j == j_probe:
@@ -102,10 +105,14 @@ def _experiment(case, res, contact, depth, z_ref, centre, plate_x, with_probe):
         surfaces.insert(0, top_pair)
     pressed = [numbers["WALL"][e] for e in inner_wall] + [numbers["APEX"][e] for e in inner_apex]
     axis_outer = mesh.ids[("wall", 0, j_probe, 2 * res.layers)]
-    return mesh, sets, surfaces, pressed, axis_outer
+    # zsym: the end face's two inner nodes on the mirror plane (theta 0 and pi), whose mean x
+    # the deck holds (deck.py, `end_pair`).
+    end_pair = (mesh.ids[("wall", 0, 0, 0)], mesh.ids[("wall", last_i, 0, 0)]) if case.end == "zsym" else None
+    return mesh, sets, surfaces, pressed, axis_outer, end_pair
 
 
-def simulate(case, res, contact, depth, folder, increments=32, clearance=0.01, probe_clearance=0.02, timeout=None):
+def simulate(case, res, contact, depth, folder, increments=32, clearance=0.01, probe_clearance=0.02, timeout=None,
+             niceness=15):
     """Inflation, then the probe moved `depth` [um] past first touch in -x. Two ccx runs: the
     inflation alone, which gives where the wall's finest line (under the probe) lies once
     inflated, then inflation and indentation with the probe's axis on that point,
@@ -116,7 +123,7 @@ def simulate(case, res, contact, depth, folder, increments=32, clearance=0.01, p
     substrate, src/fe/README.md), so k does not see the difference. The depth is counted from first touch, measured on the inflated wall. Returns a
     dict: turgid diameter d [um], depth and force curves [um, uN, whole tube], the window fit
     (k [N/m] over 0.4-4 uN), the node count and the run time [s] of both runs. Each ccx run is
-    stopped after `timeout` s (SolidTimeout)."""
+    stopped after `timeout` s (SolidTimeout) and runs under `nice -n niceness`."""
     os.makedirs(folder, exist_ok=True)
     r0 = case.d0 / 2
     hoop, axial, thickness = stvk_stretches(case.p / case.E, case.h0 / case.d0, case.nu)
@@ -132,19 +139,20 @@ def simulate(case, res, contact, depth, folder, increments=32, clearance=0.01, p
     plate_x = -outer_radius - clearance
 
     far = np.array([outer_radius + 1.0 + case.rho, 0.0, z_axis])  # 1 um clear: no contact
-    mesh, sets, surfaces, pressed, axis_outer = _experiment(case, res, contact, depth, z_ref, far, plate_x, False)
+    mesh, sets, surfaces, pressed, axis_outer, end_pair = _experiment(case, res, contact, depth, z_ref, far, plate_x,
+                                                                      False)
     base = os.path.join(folder, "inflate")
     write(base + ".inp", mesh, sets, wall_law, case.h0, pressed, surfaces, contact, probe_move=0.0,
-          wall_element=res.element, indent=False)
-    seconds = run_ccx(base, timeout=timeout)
+          wall_element=res.element, indent=False, end_pair=end_pair)
+    seconds = run_ccx(base, timeout=timeout, niceness=niceness)
     x = inflated_position(base, axis_outer)
 
     centre = np.array([x[0] + probe_clearance + case.rho, 0.0, x[2]])
-    mesh, sets, surfaces, pressed, _ = _experiment(case, res, contact, depth, z_ref, centre, plate_x, True)
+    mesh, sets, surfaces, pressed, _, end_pair = _experiment(case, res, contact, depth, z_ref, centre, plate_x, True)
     base = os.path.join(folder, "indent")
     write(base + ".inp", mesh, sets, wall_law, case.h0, pressed, surfaces, contact,
-          probe_move=depth + probe_clearance, increments=increments, wall_element=res.element)
-    seconds += run_ccx(base, timeout=timeout)
+          probe_move=depth + probe_clearance, increments=increments, wall_element=res.element, end_pair=end_pair)
+    seconds += run_ccx(base, timeout=timeout, niceness=niceness)
 
     d, depths, forces = read_run(base, case.rho)
     fit = fit_force_window(depths, forces, 0.4, 4.0)
