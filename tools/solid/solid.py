@@ -1,5 +1,6 @@
 """One tube in CalculiX: inflate, place the probe and the plate, indent; the force curve, the
 turgid diameter and k over the instrument's window, read as the shell model reads them."""
+import filecmp
 import os
 import subprocess
 import time
@@ -52,6 +53,21 @@ def run_ccx(deck_base, threads=1, timeout=None, niceness=15):
     return time.monotonic() - start
 
 
+def solve(base, reuse=False, timeout=None, niceness=15):
+    """ccx on the deck just written to base.new.inp, which becomes base.inp; returns the wall time
+    in s. With `reuse`, when base.inp is that same deck and base.log ends a finished run, the run
+    is read, not repeated, and the time is the one its log gives (ccx's own total)."""
+    fresh = base + ".new.inp"
+    if reuse and os.path.exists(base + ".inp") and filecmp.cmp(fresh, base + ".inp", shallow=False):
+        logged = [l for l in open(base + ".log")] if os.path.exists(base + ".log") else []
+        total = [l for l in logged if "Total CalculiX Time" in l]
+        if total:
+            os.remove(fresh)
+            return float(total[-1].split(":")[1])
+    os.replace(fresh, base + ".inp")
+    return run_ccx(base, timeout=timeout, niceness=niceness)
+
+
 def _experiment(case, res, contact, depth, z_ref, centre, plate_x, with_probe):
     """The mesh, node sets, contact surfaces and pressed elements of one deck: the wall graded
     towards the line theta = 0, s = z_ref; the probe's cap centred at `centre`, the plate's
@@ -59,7 +75,8 @@ def _experiment(case, res, contact, depth, z_ref, centre, plate_x, with_probe):
     inflation pass that finds where the graded line lies once inflated)."""
     r0 = case.d0 / 2
     mesh = Mesh()
-    theta, s, t, outer_faces, inner_wall, inner_apex = wall(mesh, Tube(case.d0, case.h0, case.length, z_ref), res)
+    theta, s, t, outer_faces, inner_wall, inner_apex, transition = wall(mesh, Tube(case.d0, case.h0, case.length, z_ref),
+                                                                        res)
     probe_faces = probe(mesh, centre, case.rho, cells=res.probe_cells)
     reach = 2 * case.rho + 2 * case.h0 + depth + 0.5  # the patch the probe can touch
     plate_faces = plate(mesh, plate_x, (-0.5, 0.5 * r0),
@@ -108,11 +125,16 @@ def _experiment(case, res, contact, depth, z_ref, centre, plate_x, with_probe):
     # zsym: the end face's two inner nodes on the mirror plane (theta 0 and pi), whose mean x
     # the deck holds (deck.py, `end_pair`).
     end_pair = (mesh.ids[("wall", 0, 0, 0)], mesh.ids[("wall", last_i, 0, 0)]) if case.end == "zsym" else None
-    return mesh, sets, surfaces, pressed, axis_outer, end_pair
+    # The band's nodes tied to the far bricks (geometry.transition), each component; u_y of a
+    # node on the mirror plane is held there already.
+    mirror = set(sets["MIRROR"])
+    equations = [(mesh.ids[node], dof, [(mesh.ids[n], c) for n, c in terms]) for node, terms in transition
+                 for dof in (1, 2, 3) if not (dof == 2 and mesh.ids[node] in mirror)]
+    return mesh, sets, surfaces, pressed, axis_outer, end_pair, equations
 
 
 def simulate(case, res, contact, depth, folder, increments=32, clearance=0.01, probe_clearance=0.02, timeout=None,
-             niceness=15):
+             niceness=15, reuse=False):
     """Inflation, then the probe moved `depth` [um] past first touch in -x. Two ccx runs: the
     inflation alone, which gives where the wall's finest line (under the probe) lies once
     inflated, then inflation and indentation with the probe's axis on that point,
@@ -123,7 +145,8 @@ def simulate(case, res, contact, depth, folder, increments=32, clearance=0.01, p
     substrate, src/fe/README.md), so k does not see the difference. The depth is counted from first touch, measured on the inflated wall. Returns a
     dict: turgid diameter d [um], depth and force curves [um, uN, whole tube], the window fit
     (k [N/m] over 0.4-4 uN), the node count and the run time [s] of both runs. Each ccx run is
-    stopped after `timeout` s (SolidTimeout) and runs under `nice -n niceness`."""
+    stopped after `timeout` s (SolidTimeout) and runs under `nice -n niceness`; with `reuse`, a
+    run already finished in `folder` on the same deck is read instead (`solve`)."""
     os.makedirs(folder, exist_ok=True)
     r0 = case.d0 / 2
     hoop, axial, thickness = stvk_stretches(case.p / case.E, case.h0 / case.d0, case.nu)
@@ -139,20 +162,22 @@ def simulate(case, res, contact, depth, folder, increments=32, clearance=0.01, p
     plate_x = -outer_radius - clearance
 
     far = np.array([outer_radius + 1.0 + case.rho, 0.0, z_axis])  # 1 um clear: no contact
-    mesh, sets, surfaces, pressed, axis_outer, end_pair = _experiment(case, res, contact, depth, z_ref, far, plate_x,
-                                                                      False)
+    mesh, sets, surfaces, pressed, axis_outer, end_pair, equations = _experiment(case, res, contact, depth, z_ref, far,
+                                                                                 plate_x, False)
     base = os.path.join(folder, "inflate")
-    write(base + ".inp", mesh, sets, wall_law, case.h0, pressed, surfaces, contact, probe_move=0.0,
-          wall_element=res.element, indent=False, end_pair=end_pair)
-    seconds = run_ccx(base, timeout=timeout, niceness=niceness)
+    write(base + ".new.inp", mesh, sets, wall_law, case.h0, pressed, surfaces, contact, probe_move=0.0,
+          wall_element=res.element, indent=False, end_pair=end_pair, equations=equations)
+    seconds = solve(base, reuse, timeout, niceness)
     x = inflated_position(base, axis_outer)
 
     centre = np.array([x[0] + probe_clearance + case.rho, 0.0, x[2]])
-    mesh, sets, surfaces, pressed, _, end_pair = _experiment(case, res, contact, depth, z_ref, centre, plate_x, True)
+    mesh, sets, surfaces, pressed, _, end_pair, equations = _experiment(case, res, contact, depth, z_ref, centre, plate_x,
+                                                                        True)
     base = os.path.join(folder, "indent")
-    write(base + ".inp", mesh, sets, wall_law, case.h0, pressed, surfaces, contact,
-          probe_move=depth + probe_clearance, increments=increments, wall_element=res.element, end_pair=end_pair)
-    seconds += run_ccx(base, timeout=timeout, niceness=niceness)
+    write(base + ".new.inp", mesh, sets, wall_law, case.h0, pressed, surfaces, contact,
+          probe_move=depth + probe_clearance, increments=increments, wall_element=res.element, end_pair=end_pair,
+          equations=equations)
+    seconds += solve(base, reuse, timeout, niceness)
 
     d, depths, forces = read_run(base, case.rho)
     fit = fit_force_window(depths, forces, 0.4, 4.0)
