@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from deck import Wall, element_ids, write
+from deck import Wall, element_ids, read_dat, write
 from far_field import stvk_stretches
 from geometry import Tube, plate, probe, wall
 from mesh import Mesh
@@ -34,9 +34,16 @@ class SolidTimeout(RuntimeError):
     cut its increments for hours, README.md)."""
 
 
-def run_ccx(deck_base, threads=1, timeout=None, niceness=15):
+STOPPED = "stopped by tools/solid/solid.py: the probe's force passed"
+
+
+def run_ccx(deck_base, threads=1, timeout=None, niceness=15, stop_force=None):
     """Runs ccx on deck_base.inp in its directory, under `nice -n niceness`; returns the wall
-    time in s. Stops it and raises SolidTimeout after `timeout` s."""
+    time in s. Stops it and raises SolidTimeout after `timeout` s. With `stop_force` [uN, whole
+    tube], ccx is also stopped, as a finished run, once the probe's force in its .dat passes it
+    (`run_until_force`)."""
+    if stop_force is not None:
+        return run_until_force(deck_base, stop_force, threads, timeout, niceness)
     env = dict(os.environ, OMP_NUM_THREADS=str(threads), CCX_NPROC_STIFFNESS=str(threads))
     start = time.monotonic()
     folder, name = os.path.split(deck_base)
@@ -53,19 +60,58 @@ def run_ccx(deck_base, threads=1, timeout=None, niceness=15):
     return time.monotonic() - start
 
 
-def solve(base, reuse=False, timeout=None, niceness=15):
-    """ccx on the deck just written to base.new.inp, which becomes base.inp; returns the wall time
-    in s. With `reuse`, when base.inp is that same deck and base.log ends a finished run, the run
-    is read, not repeated, and the time is the one its log gives (ccx's own total)."""
+def probe_force(dat):
+    """The largest force on the probe [uN, whole tube] in a ccx .dat so far (0 before any)."""
+    totals = [-b[3][0][0] for b in read_dat(dat) if b[1] == "PROBEN" and b[3]] if os.path.exists(dat) else []
+    return 2.0 * max(totals, default=0.0)
+
+
+def run_until_force(deck_base, stop_force, threads=1, timeout=None, niceness=15, poll=2.0):
+    """run_ccx that stops ccx once the probe's force passes `stop_force`: past the window's top
+    the curve is not read, and a St-VK wall can collapse under the probe there and cut its
+    increments for as long as it is let (README.md, "Results"). The log ends with a line that
+    says so, which `solve` takes as a finished run."""
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads), CCX_NPROC_STIFFNESS=str(threads))
+    start = time.monotonic()
+    folder, name = os.path.split(deck_base)
+    with open(deck_base + ".log", "w") as log:
+        ccx = subprocess.Popen(["nice", "-n", str(niceness), "ccx", "-i", name], cwd=folder or ".", env=env,
+                               stdout=log, stderr=subprocess.STDOUT)
+        while ccx.poll() is None:
+            time.sleep(poll)
+            if timeout is not None and time.monotonic() - start > timeout:
+                ccx.kill()
+                ccx.wait()
+                raise SolidTimeout(f"ccx stopped after {timeout:.0f} s on {deck_base}.inp")
+            force = probe_force(deck_base + ".dat")
+            if force >= stop_force:
+                ccx.kill()
+                ccx.wait()
+                seconds = time.monotonic() - start
+                log.write(f"\n{STOPPED} {stop_force:g} uN ({force:.4g} uN) after {seconds:.1f} s\n")
+                return seconds
+    text = open(deck_base + ".log").read()
+    if ccx.returncode != 0 or "*ERROR" in text:
+        lines = [l for l in text.splitlines() if "ERROR" in l]
+        raise RuntimeError(f"ccx failed on {deck_base}.inp: {lines[:3]} (log {deck_base}.log)")
+    return time.monotonic() - start
+
+
+def solve(base, reuse=False, timeout=None, niceness=15, stop_force=None):
+    """ccx on the deck just written to base.new.inp, which becomes base.inp (run_ccx); returns
+    the wall time in s. With `reuse`, when base.inp is that same deck and base.log ends a
+    finished run (or one stopped at the force, `run_until_force`), the run is read, not
+    repeated, and the time is the one its log gives (ccx's own total, or the stop's)."""
     fresh = base + ".new.inp"
     if reuse and os.path.exists(base + ".inp") and filecmp.cmp(fresh, base + ".inp", shallow=False):
-        logged = [l for l in open(base + ".log")] if os.path.exists(base + ".log") else []
+        logged = open(base + ".log").read().splitlines() if os.path.exists(base + ".log") else []
         total = [l for l in logged if "Total CalculiX Time" in l]
-        if total:
+        stopped = [l for l in logged if l.startswith(STOPPED)]
+        if total or stopped:
             os.remove(fresh)
-            return float(total[-1].split(":")[1])
+            return float(total[-1].split(":")[1]) if total else float(stopped[-1].split()[-2])
     os.replace(fresh, base + ".inp")
-    return run_ccx(base, timeout=timeout, niceness=niceness)
+    return run_ccx(base, timeout=timeout, niceness=niceness, stop_force=stop_force)
 
 
 def _experiment(case, res, contact, depth, z_ref, centre, plate_x, with_probe):
@@ -134,7 +180,7 @@ def _experiment(case, res, contact, depth, z_ref, centre, plate_x, with_probe):
 
 
 def simulate(case, res, contact, depth, folder, increments=32, clearance=0.01, probe_clearance=0.02, timeout=None,
-             niceness=15, reuse=False):
+             niceness=15, reuse=False, stop_force=None):
     """Inflation, then the probe moved `depth` [um] past first touch in -x. Two ccx runs: the
     inflation alone, which gives where the wall's finest line (under the probe) lies once
     inflated, then inflation and indentation with the probe's axis on that point,
@@ -146,7 +192,8 @@ def simulate(case, res, contact, depth, folder, increments=32, clearance=0.01, p
     dict: turgid diameter d [um], depth and force curves [um, uN, whole tube], the window fit
     (k [N/m] over 0.4-4 uN), the node count and the run time [s] of both runs. Each ccx run is
     stopped after `timeout` s (SolidTimeout) and runs under `nice -n niceness`; with `reuse`, a
-    run already finished in `folder` on the same deck is read instead (`solve`)."""
+    run already finished in `folder` on the same deck is read instead (`solve`); with
+    `stop_force` [uN], the indentation's ccx run is stopped once the probe's force passes it."""
     os.makedirs(folder, exist_ok=True)
     r0 = case.d0 / 2
     hoop, axial, thickness = stvk_stretches(case.p / case.E, case.h0 / case.d0, case.nu)
@@ -177,7 +224,7 @@ def simulate(case, res, contact, depth, folder, increments=32, clearance=0.01, p
     write(base + ".new.inp", mesh, sets, wall_law, case.h0, pressed, surfaces, contact,
           probe_move=depth + probe_clearance, increments=increments, wall_element=res.element, end_pair=end_pair,
           equations=equations)
-    seconds += solve(base, reuse, timeout, niceness)
+    seconds += solve(base, reuse, timeout, niceness, stop_force)
 
     d, depths, forces = read_run(base, case.rho)
     fit = fit_force_window(depths, forces, 0.4, 4.0)
