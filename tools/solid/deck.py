@@ -42,9 +42,12 @@ def element_ids(mesh):
 
 
 def write(path, mesh, node_sets, wall, h0, pressed, surfaces, contact, probe_move, increments=50, wall_element="C3D20",
-          indent=True):
+          indent=True, end_pair=None, equations=()):
     """A deck: the mesh, `node_sets` (name -> node ids), the wall's law, the mirror and end
-    conditions; step 1 inflates (turgor on face 1 of the `pressed` elements, the inner wall's), step 2
+    conditions (without `end_pair`, the set END pinned; with it, END held in z only, the
+    study's driver's z-symmetry end face, and the mean x of the two nodes of `end_pair`, on the
+    mirror plane at opposite sides of the tube, held); `equations`: (node, component, [(node,
+    coefficient)]), the node's displacement component the sum of the others' (geometry.transition); step 1 inflates (turgor on face 1 of the `pressed` elements, the inner wall's), step 2
     moves the probe's nodes by `probe_move` in -x (left out without `indent`). `surfaces`: (slave, master) pairs of
     (name, [(element id, face)])."""
     numbers = element_ids(mesh)
@@ -76,7 +79,17 @@ def write(path, mesh, node_sets, wall, h0, pressed, surfaces, contact, probe_mov
                 # K; the tension at large clearance (node to surface only), a small fraction of the
                 # contact pressure under the probe (of order E); 1e-6 E was tried first (README).
             f"{slope:.6g}, {contact.tension * wall.E:.6g}"]
-    out += ["*BOUNDARY", "MIRROR, 2, 2", "END, 1, 3", "PROBEN, 1, 3", "PLATEN, 1, 3"]
+    out += ["*BOUNDARY", "MIRROR, 2, 2", "END, 1, 3" if end_pair is None else "END, 3, 3", "PROBEN, 1, 3", "PLATEN, 1, 3"]
+    if end_pair is not None:
+        # The z-symmetry end face and the mirror plane leave the tube free to slide in x (the
+        # plate is clear of it during the inflation): u_x of the end face's two mirror nodes
+        # sum to zero, which a uniform inflation satisfies and a translation does not.
+        out += ["*EQUATION", "2", f"{end_pair[0]}, 1, 1., {end_pair[1]}, 1, 1."]
+    for node, dof, terms in equations:
+        entries = [(node, 1.0)] + [(n, -c) for n, c in terms]
+        # ccx reads at most 12 entries, 4 terms, per line.
+        out += ["*EQUATION", str(len(entries))]
+        out += [", ".join(f"{n}, {dof}, {c:.10g}" for n, c in entries[k:k + 4]) for k in range(0, len(entries), 4)]
     out += ["*STEP, NLGEOM, INC=1000", "*STATIC", "0.25, 1.0, 1e-4, 0.5", "*DLOAD"]
     out += [f"{e}, P1, {wall.p:.10g}" for e in pressed]
     out += ["*NODE PRINT, NSET=REPORT", "U", "*END STEP"]

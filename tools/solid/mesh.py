@@ -60,11 +60,13 @@ BRICK20 = [(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0), (0, 0, 2), (2, 0, 2), (2,
 BRICK8 = BRICK20[:8]
 
 
-def block(mesh, name, tag, u, v, w, position, kind="C3D20"):
+def block(mesh, name, tag, u, v, w, position, kind="C3D20", index=None):
     """A structured block over corner coordinates u, v, w (zeta = w: face 1 at w[0], face 2 at
     w[-1]); position(u, v, w) -> xyz must be right-handed in (u, v, w).
     Returns the element grid's (iu, iv) -> element index within the set, for the faces at
-    w[-1] (outer) and at w[0] (inner)."""
+    w[-1] (outer) and at w[0] (inner). A node's key is (tag, i, j, k), its indices along u, v, w
+    counting midpoints, or (tag,) + index(i, j, k): blocks that share a face share its nodes
+    when their indices map to the same keys there."""
     quadratic = kind == "C3D20"
     uu, vv, ww = (with_midpoints(a) for a in (u, v, w)) if quadratic else (u, v, w)
     step = 2 if quadratic else 1
@@ -77,7 +79,8 @@ def block(mesh, name, tag, u, v, w, position, kind="C3D20"):
                 for (di, dj, dk) in pattern:
                     i, j, k = (step * a + di // (3 - step), step * b + dj // (3 - step),
                                step * c + dk // (3 - step))
-                    nodes.append(mesh.node((tag, i, j, k), position(uu[i], vv[j], ww[k])))
+                    key = (tag, i, j, k) if index is None else (tag,) + index(i, j, k)
+                    nodes.append(mesh.node(key, position(uu[i], vv[j], ww[k])))
                 mesh.add(name, kind, nodes)
                 if c == len(w) - 2:
                     outer[(a, b)] = len(mesh.elements[name]) - 1
