@@ -89,7 +89,7 @@ Inflated inflate(const ShellFeMeasurement& m, const Instrument& instrument, cons
     const fe::ForwardResult result = fe::simulate_inflation(problem);
     ++inverse.inflation_solves;
     inverse.newton_iterations += result.newton_iterations;
-    failed = result.status != SampleStatus::ok || !(h0 > 0) || !(result.turgid_diameter > 0);
+    failed = result.status != SampleStatus::ok || !(result.turgid_diameter > 0);
     if (failed) {
       inflated.status = result.status == SampleStatus::ok ? SampleStatus::burst : result.status;
       inflated.message = "finite-element inflation: " + result.message;

@@ -33,6 +33,12 @@ def inflated_position(base, node):
     return nodes[node] + row[1:4]
 
 
+def probe_forces(blocks):
+    """(total time, force on the probe [uN, whole tube: the half model's doubled]) at each
+    increment that printed the probe's reaction, from read_dat's blocks."""
+    return [(time, -2.0 * rows[0][0]) for _, name, time, rows in blocks if name == "PROBEN" and rows]
+
+
 def read_run(base, rho):
     """d [um], depth [um] and force [uN] arrays (from first touch) of the run `base`.inp/.dat."""
     nodes, sets, move = _inp(base + ".inp")
@@ -47,9 +53,9 @@ def read_run(base, rho):
     lateral = [(x[n], x[n][1] ** 2 + (x[n][2] - centre[2]) ** 2) for n in sets["UNDER"]]
     touch = max(v[0] + np.sqrt(rho ** 2 - l2) for v, l2 in lateral if l2 < rho ** 2)
     gap = centre[0] - touch
-    curve = [(b[2] - 1.0, -b[3][0][0]) for b in blocks if b[1] == "PROBEN"]  # total time; step 2
-    depth = np.array([c[0] for c in curve]) * move - gap
-    force = 2.0 * np.array([c[1] for c in curve])  # the half model's force, doubled
+    curve = probe_forces(blocks)  # total time: step 2 runs from 1 to 2
+    depth = (np.array([t for t, _ in curve]) - 1.0) * move - gap
+    force = np.array([f for _, f in curve])
     keep = depth > 0  # the approach before first touch carries no force
     return d, np.concatenate([[0.0], depth[keep]]), np.concatenate([[0.0], force[keep]])
 

@@ -12,7 +12,7 @@ from deck import Wall, element_ids, read_dat, write
 from far_field import stvk_stretches
 from geometry import Tube, plate, probe, wall
 from mesh import Mesh
-from results import inflated_position, read_run
+from results import inflated_position, probe_forces, read_run
 from window import fit_force_window
 
 
@@ -62,8 +62,8 @@ def run_ccx(deck_base, threads=1, timeout=None, niceness=15, stop_force=None):
 
 def probe_force(dat):
     """The largest force on the probe [uN, whole tube] in a ccx .dat so far (0 before any)."""
-    totals = [-b[3][0][0] for b in read_dat(dat) if b[1] == "PROBEN" and b[3]] if os.path.exists(dat) else []
-    return 2.0 * max(totals, default=0.0)
+    forces = [f for _, f in probe_forces(read_dat(dat))] if os.path.exists(dat) else []
+    return max(forces, default=0.0)
 
 
 def run_until_force(deck_base, stop_force, threads=1, timeout=None, niceness=15, poll=2.0):
