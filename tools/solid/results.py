@@ -25,6 +25,11 @@ def _inp(path):
     return nodes, sets, move
 
 
+def node_count(base):
+    """Nodes of the deck `base`.inp."""
+    return len(_inp(base + ".inp")[0])
+
+
 def inflated_position(base, node):
     """xyz [um] of `node` at the end of the inflation (step 1) of the run `base`.inp/.dat."""
     nodes, _, _ = _inp(base + ".inp")
