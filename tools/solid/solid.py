@@ -35,6 +35,7 @@ class SolidTimeout(RuntimeError):
 
 
 STOPPED = "stopped by tools/solid/solid.py: the probe's force passed"
+TIMED_OUT = "stopped by tools/solid/solid.py after its timeout of"
 
 
 def run_ccx(deck_base, threads=1, timeout=None, niceness=15, stop_force=None):
@@ -50,7 +51,9 @@ def run_ccx(deck_base, threads=1, timeout=None, niceness=15, stop_force=None):
     try:
         result = subprocess.run(["nice", "-n", str(niceness), "ccx", "-i", name], cwd=folder or ".", env=env,
                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=timeout)
-    except subprocess.TimeoutExpired:
+    except subprocess.TimeoutExpired as expired:
+        with open(deck_base + ".log", "w") as f:  # what ccx said, and that it was stopped (`solve`)
+            f.write((expired.stdout or b"").decode(errors="replace") + f"\n{TIMED_OUT} {timeout:.0f} s\n")
         raise SolidTimeout(f"ccx stopped after {timeout:.0f} s on {deck_base}.inp") from None
     with open(deck_base + ".log", "w") as f:
         f.write(result.stdout)
@@ -82,6 +85,7 @@ def run_until_force(deck_base, stop_force, threads=1, timeout=None, niceness=15,
             if timeout is not None and time.monotonic() - start > timeout:
                 ccx.kill()
                 ccx.wait()
+                log.write(f"\n{TIMED_OUT} {timeout:.0f} s\n")
                 raise SolidTimeout(f"ccx stopped after {timeout:.0f} s on {deck_base}.inp")
             force = probe_force(deck_base + ".dat")
             if force >= stop_force:
@@ -101,12 +105,17 @@ def solve(base, reuse=False, timeout=None, niceness=15, stop_force=None):
     """ccx on the deck just written to base.new.inp, which becomes base.inp (run_ccx); returns
     the wall time in s. With `reuse`, when base.inp is that same deck and base.log ends a
     finished run (or one stopped at the force, `run_until_force`), the run is read, not
-    repeated, and the time is the one its log gives (ccx's own total, or the stop's)."""
+    repeated, and the time is the one its log gives (ccx's own total, or the stop's); one its
+    timeout stopped raises SolidTimeout again, its files left to be read as far as it went."""
     fresh = base + ".new.inp"
     if reuse and os.path.exists(base + ".inp") and filecmp.cmp(fresh, base + ".inp", shallow=False):
         logged = open(base + ".log").read().splitlines() if os.path.exists(base + ".log") else []
         total = [l for l in logged if "Total CalculiX Time" in l]
         stopped = [l for l in logged if l.startswith(STOPPED)]
+        timed_out = [l for l in logged if l.startswith(TIMED_OUT)]
+        if timed_out and not (total or stopped):
+            os.remove(fresh)
+            raise SolidTimeout(f"ccx stopped after {timed_out[-1].split()[-2]} s on {base}.inp (read from its log)")
         if total or stopped:
             os.remove(fresh)
             return float(total[-1].split(":")[1]) if total else float(stopped[-1].split()[-2])
