@@ -31,7 +31,11 @@ class Case:
 
 class SolidTimeout(RuntimeError):
     """A ccx run stopped after its allotted wall time (a wall that collapses under the probe can
-    cut its increments for hours, README.md)."""
+    cut its increments for hours, README.md); `seconds`: that time."""
+
+    def __init__(self, message, seconds):
+        super().__init__(message)
+        self.seconds = seconds
 
 
 STOPPED = "stopped by tools/solid/solid.py: the probe's force passed"
@@ -54,7 +58,7 @@ def run_ccx(deck_base, threads=1, timeout=None, niceness=15, stop_force=None):
     except subprocess.TimeoutExpired as expired:
         with open(deck_base + ".log", "w") as f:  # what ccx said, and that it was stopped (`solve`)
             f.write((expired.stdout or b"").decode(errors="replace") + f"\n{TIMED_OUT} {timeout:.0f} s\n")
-        raise SolidTimeout(f"ccx stopped after {timeout:.0f} s on {deck_base}.inp") from None
+        raise SolidTimeout(f"ccx stopped after {timeout:.0f} s on {deck_base}.inp", timeout) from None
     with open(deck_base + ".log", "w") as f:
         f.write(result.stdout)
     if result.returncode != 0 or "*ERROR" in result.stdout:
@@ -86,7 +90,7 @@ def run_until_force(deck_base, stop_force, threads=1, timeout=None, niceness=15,
                 ccx.kill()
                 ccx.wait()
                 log.write(f"\n{TIMED_OUT} {timeout:.0f} s\n")
-                raise SolidTimeout(f"ccx stopped after {timeout:.0f} s on {deck_base}.inp")
+                raise SolidTimeout(f"ccx stopped after {timeout:.0f} s on {deck_base}.inp", timeout)
             force = probe_force(deck_base + ".dat")
             if force >= stop_force:
                 ccx.kill()
@@ -115,7 +119,8 @@ def solve(base, reuse=False, timeout=None, niceness=15, stop_force=None):
         timed_out = [l for l in logged if l.startswith(TIMED_OUT)]
         if timed_out and not (total or stopped):
             os.remove(fresh)
-            raise SolidTimeout(f"ccx stopped after {timed_out[-1].split()[-2]} s on {base}.inp (read from its log)")
+            seconds = float(timed_out[-1].split()[-2])
+            raise SolidTimeout(f"ccx stopped after {seconds:.0f} s on {base}.inp (read from its log)", seconds)
         if total or stopped:
             os.remove(fresh)
             return float(total[-1].split(":")[1]) if total else float(stopped[-1].split()[-2])
