@@ -12,7 +12,7 @@ from deck import Wall, element_ids, read_dat, write
 from far_field import stvk_stretches
 from geometry import Tube, plate, probe, wall
 from mesh import Mesh
-from results import inflated_position, probe_forces, read_run
+from results import inflated_position, node_count, probe_forces, read_run
 from window import fit_force_window
 
 
@@ -31,11 +31,11 @@ class Case:
 
 class SolidTimeout(RuntimeError):
     """A ccx run stopped after its allotted wall time (a wall that collapses under the probe can
-    cut its increments for hours, README.md); `seconds`: that time."""
+    cut its increments for hours, README.md); `seconds`: that time, `deck`: the run's base path."""
 
-    def __init__(self, message, seconds):
+    def __init__(self, message, seconds, deck):
         super().__init__(message)
-        self.seconds = seconds
+        self.seconds, self.deck = seconds, deck
 
 
 STOPPED = "stopped by tools/solid/solid.py: the probe's force passed"
@@ -58,7 +58,7 @@ def run_ccx(deck_base, threads=1, timeout=None, niceness=15, stop_force=None):
     except subprocess.TimeoutExpired as expired:
         with open(deck_base + ".log", "w") as f:  # what ccx said, and that it was stopped (`solve`)
             f.write((expired.stdout or b"").decode(errors="replace") + f"\n{TIMED_OUT} {timeout:.0f} s\n")
-        raise SolidTimeout(f"ccx stopped after {timeout:.0f} s on {deck_base}.inp", timeout) from None
+        raise SolidTimeout(f"ccx stopped after {timeout:.0f} s on {deck_base}.inp", timeout, deck_base) from None
     with open(deck_base + ".log", "w") as f:
         f.write(result.stdout)
     if result.returncode != 0 or "*ERROR" in result.stdout:
@@ -90,7 +90,7 @@ def run_until_force(deck_base, stop_force, threads=1, timeout=None, niceness=15,
                 ccx.kill()
                 ccx.wait()
                 log.write(f"\n{TIMED_OUT} {timeout:.0f} s\n")
-                raise SolidTimeout(f"ccx stopped after {timeout:.0f} s on {deck_base}.inp", timeout)
+                raise SolidTimeout(f"ccx stopped after {timeout:.0f} s on {deck_base}.inp", timeout, deck_base)
             force = probe_force(deck_base + ".dat")
             if force >= stop_force:
                 ccx.kill()
@@ -120,7 +120,7 @@ def solve(base, reuse=False, timeout=None, niceness=15, stop_force=None):
         if timed_out and not (total or stopped):
             os.remove(fresh)
             seconds = float(timed_out[-1].split()[-2])
-            raise SolidTimeout(f"ccx stopped after {seconds:.0f} s on {base}.inp (read from its log)", seconds)
+            raise SolidTimeout(f"ccx stopped after {seconds:.0f} s on {base}.inp (read from its log)", seconds, base)
         if total or stopped:
             os.remove(fresh)
             return float(total[-1].split(":")[1]) if total else float(stopped[-1].split()[-2])
@@ -245,7 +245,11 @@ def simulate(case, res, contact, depth, folder, increments=32, clearance=0.01, p
           equations=equations)
     seconds += solve(base, reuse, timeout, niceness, stop_force)
 
-    d, depths, forces = read_run(base, case.rho)
-    fit = fit_force_window(depths, forces, 0.4, 4.0)
-    return {"d": d, "depth": depths, "force": forces, "fit": fit,
-            "nodes": len(mesh.coordinates), "seconds": seconds}
+    return indentation_run(base, case.rho, seconds)
+
+
+def indentation_run(base, rho, seconds):
+    """The indentation run `base`.inp/.dat as `simulate` returns it, read as far as it went."""
+    d, depths, forces = read_run(base, rho)
+    return {"d": d, "depth": depths, "force": forces, "fit": fit_force_window(depths, forces, 0.4, 4.0),
+            "nodes": node_count(base), "seconds": seconds}
